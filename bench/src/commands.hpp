@@ -1,0 +1,14 @@
+#pragma once
+/// The CLI of DESIGN.md: one file per subcommand (cmd_<name>.cpp), each adding itself to the app.
+/// A command's action runs after parsing and returns the exit code (0 ok, 1 regression, 2 bad input).
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace clothbench::cli {
+
+using Action = std::function<int()>;
+
+void add_colliders_command(CLI::App& app, Action& action);
+
+}  // namespace clothbench::cli

@@ -1,0 +1,25 @@
+// clothbench: the command line of DESIGN.md
+#include <exception>
+#include <iostream>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"clothbench: garment simulation and cloth-body collision benchmark"};
+  app.require_subcommand(1);
+  clothbench::cli::Action action;
+  clothbench::cli::add_colliders_command(app, action);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints help with exit 0 and usage errors with its own code; map errors to 2
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const std::exception& e) {
+    std::cerr << "clothbench: error: " << e.what() << "\n";
+    return 2;
+  }
+}

@@ -1,0 +1,87 @@
+#pragma once
+/// The collider contract of DESIGN.md: every detection method answers the same batched question.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "clothbench/sim/body_frame.hpp"
+#include "clothbench/sim/types.hpp"
+
+namespace clothbench {
+
+/// Answer for one query point. Sign convention (as MuJoCo's mjContact): depth < 0 inside.
+/// When hit is false, depth is only a lower bound (>= tol, possibly +inf) and normal and
+/// body_velocity are zero; consumers must not read them.
+struct Contact {
+  bool hit = false;          ///< inside the body or closer than tol to its surface
+  float depth = 0;           ///< signed distance to the body surface [m]; < 0 inside
+  Vec3 normal = Vec3::Zero();         ///< unit outward body normal at the contact
+  Vec3 body_velocity = Vec3::Zero();  ///< body surface velocity there [m/s]; zero if static
+};
+
+/// Read-only view of packed query points (3 x count floats, column-major xyz) [m].
+struct PointsView {
+  const Real* xyz = nullptr;
+  std::size_t count = 0;
+  PointsView() = default;
+  PointsView(const Points3& p) : xyz(p.data()), count(static_cast<std::size_t>(p.cols())) {}  // NOLINT
+  PointsView(const Real* data, std::size_t n) : xyz(data), count(n) {}
+  Eigen::Map<const Vec3> operator[](std::size_t i) const { return Eigen::Map<const Vec3>(xyz + 3 * i); }
+};
+
+/// Writable view of `count` contacts, one per query point.
+struct ContactsOut {
+  Contact* data = nullptr;
+  std::size_t count = 0;
+  Contact& operator[](std::size_t i) const { return data[i]; }
+};
+
+/// Cumulative counters and timings of a collider [ms]. Timings are wall clock, one thread
+/// unless `threads` says otherwise.
+struct CollideStats {
+  double setup_ms = 0;        ///< set_body: maps rendered or BVH built (and uploads)
+  double update_ms = 0;       ///< all update_body calls: re-render or refit
+  double query_ms = 0;        ///< all query calls
+  std::int64_t updates = 0;   ///< update_body calls
+  std::int64_t queries = 0;   ///< query calls
+  std::int64_t points = 0;    ///< points queried
+  std::int64_t hits = 0;      ///< points answered hit
+  std::int64_t degenerate = 0;///< points that could not be answered (NaN input, ...): hit=false
+  int threads = 1;            ///< worker threads used by the backend
+};
+
+/// Options every collider understands; backends ignore what does not apply to them.
+struct ColliderOptions {
+  Real tol = 0.005f;            ///< hit when closer than this to the surface [m] (dressing Eq. 5)
+  Real search_radius = 0.05f;   ///< object space: closest points searched within this [m]
+  int map_size = 320;           ///< image space: map resolution [pixels] (dressing 5.4)
+  bool side_layer = true;       ///< image space: one extra pixel layer around the silhouette
+  bool fit_extent = false;      ///< image space: map square fitted to the body, not body height
+  bool float_maps = true;       ///< image space: float targets (false: 8-bit colours, Eq. 6/9)
+  Real max_speed = 3.0f;        ///< image space, 8-bit velocity encoding: maxv [m/s] (walking Eq. 9)
+  int threads = 1;              ///< object space: worker threads (embree)
+};
+
+/// Pluggable cloth-body collision detection. Non-copyable; owns its GL/FCL/Embree handles.
+class Collider {
+ public:
+  Collider() = default;
+  Collider(const Collider&) = delete;
+  Collider& operator=(const Collider&) = delete;
+  virtual ~Collider() = default;
+
+  /// Registry name: "is-gl", "is-cpu", "fcl", "embree", "brute", "sphere".
+  virtual std::string_view name() const = 0;
+  /// Set-up for a body: maps rendered or BVH built. Throws std::runtime_error /
+  /// std::invalid_argument with a clear message on bad input.
+  virtual void set_body(const BodyFrame& body) = 0;
+  /// Each animation frame: re-render maps or refit the BVH. Same topology as set_body.
+  virtual void update_body(const BodyFrame& body) = 0;
+  /// Hot path: one Contact per point. Never throws; NaN points are counted as degenerate.
+  virtual void query(PointsView points, ContactsOut out) = 0;
+  /// Cumulative timings and counts since construction.
+  virtual CollideStats stats() const = 0;
+};
+
+}  // namespace clothbench

@@ -1,0 +1,165 @@
+#pragma once
+/// The simulation loop of the papers: spring forces (Eq. 2), explicit Euler (Eq. 3) at a time
+/// step bounded by Eq. 4, super-elasticity limits (dressing 4, walking 3), seaming, and
+/// collision response from any Collider's contacts (dressing Eq. 12, walking Eq. 15-16).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "clothbench/sim/body_frame.hpp"
+#include "clothbench/sim/cloth.hpp"
+#include "clothbench/sim/collider.hpp"
+
+namespace clothbench {
+
+/// Cloth material. Stiffness per spring kind is the k of Eq. 2.
+struct Material {
+  Real density = 0.15f;          ///< mass per area [kg/m^2]
+  Real k_structural = 60.f;      ///< [N/m]
+  Real k_shear = 20.f;           ///< [N/m]
+  Real k_flexion = 10.f;         ///< [N/m]
+  Real damping = 0.002f;         ///< C_vd of the viscous force -C_vd v [N s/m]
+  Real friction = 0.6f;          ///< C_fric of Eq. 12/15/16
+  Real reflection = 0.0f;        ///< C_refl of Eq. 12/15
+};
+
+/// How super-elasticity is limited (dressing section 4, walking section 3).
+enum class Limit { kNone, kStiff, kPosition, kVelocity, kVelocityZero, kDirectional };
+const char* to_string(Limit limit);
+/// Parses "none", "stiff", "position", "velocity", "velocity-zero", "directional"; throws
+/// std::invalid_argument naming the accepted values otherwise.
+Limit parse_limit(const std::string& name);
+
+/// How panels are pulled together along seams.
+enum class SeamMethod { kElastic, kAttraction };
+const char* to_string(SeamMethod m);
+SeamMethod parse_seam_method(const std::string& name);
+
+/// Phases of a dressing or animation run (DESIGN.md): sew without gravity, drape, animate.
+enum class Phase { kSew, kDrape, kAnimate };
+const char* to_string(Phase p);
+
+/// Solver parameters; every field has a documented default.
+struct SolverParams {
+  Real dt = 0;                   ///< time step [s]; 0 = automatic: dt_fraction x the Eq. 4 bound
+  Real dt_fraction = 0.9f;       ///< automatic dt as a fraction of the Eq. 4 bound (0, 1]
+  bool allow_unstable_dt = false;///< accept a given dt above the Eq. 4 bound (stability studies)
+  Limit limit = Limit::kVelocity;///< super-elasticity limit
+  Real threshold = 0.10f;        ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
+  Real stiff_factor = 10.f;      ///< Limit::kStiff multiplies every stiffness by this
+  int position_passes = 1;       ///< Limit::kPosition: Provot passes per iteration
+  bool face_queries = false;     ///< also query quad midpoints (dressing section 6)
+  bool reaction_force = false;   ///< add the reaction force of walking Eq. 16
+  Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
+  SeamMethod seam_method = SeamMethod::kElastic;
+  Real seam_stiffness = 0;       ///< elastic seam springs (rest length 0) [N/m]; 0 = k_structural
+  Real attraction_speed = 0.5f;  ///< c_attraction of Durupinar Eq. 1 [m/s]
+  Real merge_distance = 0.002f;  ///< seam pairs closer than this are merged [m]
+  Real max_speed = 50.f;         ///< divergence: any vertex faster than this [m/s]
+  Real bounds_margin = 5.f;      ///< divergence: a vertex farther than this from its start box [m]
+};
+
+/// Why and where a run diverged.
+struct Divergence {
+  long iteration = 0;
+  Phase phase = Phase::kSew;
+  int vertex = -1;
+  std::string reason;            ///< "NaN", "speed ...", "left the scene bounds"
+};
+
+/// Spring strain statistics over structural springs: (|p1 - p2| - l0) / l0.
+struct StrainStats {
+  Real max = 0;
+  Real p99 = 0;
+};
+
+/// Cumulative per-phase timings [ms] and counts; CD&R and CS as in walking Table 1.
+struct SimTimings {
+  double cdr_ms = 0;   ///< collision detection (collider query) and response
+  double cs_ms = 0;    ///< cloth simulation: forces, integration, limits, seaming
+  long iterations = 0;
+};
+
+/// One cloth, one collider (not owned), explicit Euler.
+class Simulator {
+ public:
+  /// Validates every parameter and throws std::invalid_argument naming the bad one.
+  Simulator(ClothMesh mesh, const Material& material, const SolverParams& params);
+
+  /// The collider to query each iteration (may be null: no collisions). Not owned.
+  void set_collider(Collider* collider) { collider_ = collider; }
+  /// Sets the phase: kSew turns gravity off and seam forces on; kDrape/kAnimate the reverse.
+  void set_phase(Phase phase) { phase_ = phase; }
+  Phase phase() const { return phase_; }
+
+  /// One iteration (Eq. 3 plus limits, seaming and response). Returns false once diverged.
+  bool step();
+
+  /// Binds the mesh's `attached` vertices to their closest triangles of `body` (Durupinar 3.2).
+  void attach(const BodyFrame& body);
+  /// Moves attached vertices with the body (same topology as in attach()).
+  void follow_attachments(const BodyFrame& body);
+
+  /// The Eq. 4 bound 0.4 pi sqrt(m_min / K_max) [s] for the current stiffnesses.
+  Real stable_dt() const;
+  Real dt() const { return dt_; }
+
+  const ClothMesh& mesh() const { return mesh_; }
+  const Points3& positions() const { return x_; }   ///< [m] (3 x nv)
+  const Points3& velocities() const { return v_; }  ///< [m/s] (3 x nv)
+  Points3& positions() { return x_; }
+  Points3& velocities() { return v_; }
+  const Scalars& masses() const { return m_; }      ///< [kg] (nv)
+  /// Quad midpoints of the current positions (3 x nq); what face queries test.
+  const Points3& quad_midpoints() const { return mid_; }
+
+  /// Largest distance between seam pair partners [m] (0 when the mesh has no seams).
+  Real seam_gap_max() const;
+  /// Share of seam pairs merged, 0..1.
+  Real sewn_fraction() const;
+  StrainStats strain() const;
+  /// Largest vertex speed [m/s] and kinetic energy [J].
+  Real max_speed() const;
+  Real kinetic_energy() const;
+
+  const SimTimings& timings() const { return timings_; }
+  long iteration() const { return iteration_; }
+  const std::optional<Divergence>& divergence() const { return divergence_; }
+  /// Contacts of the vertices at the last iteration (nv, then nq for face queries).
+  const std::vector<Contact>& contacts() const { return contacts_; }
+
+ private:
+  void detect();
+  void accumulate_forces();
+  void add_reaction_forces();
+  void integrate_velocities();
+  void limit_velocities();
+  void attract_seams();
+  void respond();
+  void integrate_positions();
+  void limit_positions();
+  void merge_seams();
+  bool check_divergence();
+
+  ClothMesh mesh_;
+  Material material_;
+  SolverParams params_;
+  Scalars k_;          // stiffness per spring [N/m] (ns)
+  Scalars m_;          // mass per vertex [kg] (nv)
+  Scalars inv_m_;      // 1/m, 0 for attached vertices (nv)
+  Points3 x_, v_, f_;  // positions [m], velocities [m/s], forces [N] (3 x nv)
+  Points3 mid_;        // quad midpoints [m] (3 x nq)
+  std::vector<Contact> contacts_;
+  std::vector<std::uint8_t> merged_;   // per seam pair
+  std::vector<int> attach_tri_;        // per attached vertex
+  Points3 attach_bary_;                // (3 x na)
+  Box3 start_box_;
+  Collider* collider_ = nullptr;
+  Phase phase_ = Phase::kDrape;
+  Real dt_ = 0;
+  long iteration_ = 0;
+  SimTimings timings_;
+  std::optional<Divergence> divergence_;
+};
+
+}  // namespace clothbench

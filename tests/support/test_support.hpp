@@ -1,0 +1,26 @@
+#pragma once
+/// Shared test helpers: assets, precision-aware comparisons.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "clothbench/sim/types.hpp"
+
+namespace clothbench::test {
+
+/// AssertionResult for |a - b| <= tol per component, naming the worst component.
+inline ::testing::AssertionResult near_vec(const Vec3& a, const Vec3& b, double tol) {
+  const double err = (a - b).cwiseAbs().maxCoeff();
+  if (err <= tol) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "(" << a.transpose() << ") vs (" << b.transpose() << "): max error "
+                                       << err << " > " << tol;
+}
+
+/// Angle between two vectors [degrees].
+inline double angle_deg(const Vec3& a, const Vec3& b) {
+  const double c = a.normalized().dot(b.normalized());
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / M_PI;
+}
+
+}  // namespace clothbench::test
