@@ -4,7 +4,7 @@
 
 #include "clothbench/config.h"
 #include "clothbench/sim/brute_collider.hpp"
-#include "errors.hpp"
+#include "clothbench/io/errors.hpp"
 
 namespace clothbench {
 
