@@ -4,6 +4,7 @@
 /// collision response from any Collider's contacts (dressing Eq. 12, walking Eq. 15-16).
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "clothbench/sim/body_frame.hpp"
@@ -47,7 +48,7 @@ struct SolverParams {
   Limit limit = Limit::kVelocity;///< super-elasticity limit
   Real threshold = 0.10f;        ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
   Real stiff_factor = 10.f;      ///< Limit::kStiff multiplies every stiffness by this
-  int position_passes = 1;       ///< Limit::kPosition: Provot passes per iteration
+  int limit_passes = 1;          ///< passes of the position/velocity limit over all springs per iteration
   bool face_queries = false;     ///< also query quad midpoints (dressing section 6)
   bool reaction_force = false;   ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
@@ -79,6 +80,20 @@ struct SimTimings {
   double cs_ms = 0;    ///< cloth simulation: forces, integration, limits, seaming
   long iterations = 0;
 };
+
+/// Velocity after a collision (dressing Eq. 12, walking Eq. 15): relative to the body,
+/// v_res = C_fric v_t - C_refl v_n + v_object. The reflection applies only to a normal component
+/// heading into the body (v_n . n < 0); a point already leaving keeps its normal component.
+Vec3 collision_response(const Vec3& v, const Contact& contact, Real friction, Real reflection);
+
+/// Stretching velocity components (va, vb along the unit vector p2 - p1) of an over-elongated
+/// spring after a velocity limit: kVelocityZero zeroes both (dressing 4.3), kVelocity averages them
+/// (walking Eq. 5), kDirectional averages when |cos_alpha| < 0.3 and otherwise gives the rear point
+/// the front one's component (walking Eq. 6 rules; cos_alpha > 0: the rear point is p1).
+/// Averages are weighted by the end masses wa, wb (equal in the papers). Other limits return
+/// (va, vb) unchanged.
+std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1,
+                                             Real wb = 1);
 
 /// One cloth, one collider (not owned), explicit Euler.
 class Simulator {
@@ -134,6 +149,7 @@ class Simulator {
   void add_reaction_forces();
   void integrate_velocities();
   void limit_velocities();
+  Vec3 spring_object_velocity(int a, int b) const;
   void attract_seams();
   void respond();
   void integrate_positions();
@@ -153,6 +169,7 @@ class Simulator {
   std::vector<std::uint8_t> merged_;   // per seam pair
   std::vector<int> attach_tri_;        // per attached vertex
   Points3 attach_bary_;                // (3 x na)
+  Points3 attach_offset_;              // attached vertex minus its binding point [m] (3 x na)
   Box3 start_box_;
   Collider* collider_ = nullptr;
   Phase phase_ = Phase::kDrape;

@@ -1,0 +1,457 @@
+#include "clothbench/sim/simulator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "clothbench/sim/mesh_query.hpp"
+#include "clothbench/sim/timer.hpp"
+
+namespace clothbench {
+
+const char* to_string(Limit limit) {
+  switch (limit) {
+    case Limit::kNone: return "none";
+    case Limit::kStiff: return "stiff";
+    case Limit::kPosition: return "position";
+    case Limit::kVelocity: return "velocity";
+    case Limit::kVelocityZero: return "velocity-zero";
+    case Limit::kDirectional: return "directional";
+  }
+  return "?";
+}
+
+Limit parse_limit(const std::string& name) {
+  for (Limit l : {Limit::kNone, Limit::kStiff, Limit::kPosition, Limit::kVelocity, Limit::kVelocityZero,
+                  Limit::kDirectional})
+    if (name == to_string(l)) return l;
+  throw std::invalid_argument("limit: unknown method '" + name +
+                              "' (none, stiff, position, velocity, velocity-zero, directional)");
+}
+
+const char* to_string(SeamMethod m) { return m == SeamMethod::kElastic ? "elastic" : "attraction"; }
+
+SeamMethod parse_seam_method(const std::string& name) {
+  if (name == "elastic") return SeamMethod::kElastic;
+  if (name == "attraction") return SeamMethod::kAttraction;
+  throw std::invalid_argument("seam_method: unknown method '" + name + "' (elastic, attraction)");
+}
+
+const char* to_string(Phase p) {
+  switch (p) {
+    case Phase::kSew: return "sew";
+    case Phase::kDrape: return "drape";
+    case Phase::kAnimate: return "animate";
+  }
+  return "?";
+}
+
+Vec3 collision_response(const Vec3& v, const Contact& c, Real friction, Real reflection) {
+  // dressing Eq. 12 / walking Eq. 15, on the velocity relative to the body
+  const Vec3 rel = v - c.body_velocity;
+  const Real vn_len = rel.dot(c.normal);
+  const Vec3 vn = vn_len * c.normal;
+  const Vec3 vt = rel - vn;
+  const Vec3 vn_res = vn_len < 0 ? Vec3(-reflection * vn) : vn;
+  return friction * vt + vn_res + c.body_velocity;
+}
+
+std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa, Real wb) {
+  // walking Eq. 5 averages; with unequal masses the mass-weighted mean keeps momentum and never adds
+  // kinetic energy (the papers' points all have one mass, where both are the same)
+  const Real mean = (wa * va + wb * vb) / (wa + wb);
+  switch (limit) {
+    case Limit::kVelocityZero: return {0, 0};  // dressing 4.3
+    case Limit::kVelocity: return {mean, mean};  // walking Eq. 5
+    case Limit::kDirectional:
+      // walking section 3: perpendicular springs average, others: rear point catches up
+      if (std::abs(cos_alpha) < 0.3f) return {mean, mean};
+      return cos_alpha > 0 ? std::pair<Real, Real>{vb, vb} : std::pair<Real, Real>{va, va};
+    default: return {va, vb};
+  }
+}
+
+namespace {
+
+// throws naming the parameter unless lo < value < hi (or <= when inclusive)
+void require(bool ok, const char* name, const std::string& rule, double value) {
+  if (!ok || !std::isfinite(value))
+    throw std::invalid_argument(std::string(name) + " = " + std::to_string(value) + ": must be " + rule);
+}
+
+void validate(const Material& m, const SolverParams& p) {
+  require(m.density > 0, "density", "> 0 kg/m^2", m.density);
+  require(m.k_structural > 0, "k_structural", "> 0 N/m", m.k_structural);
+  require(m.k_shear > 0, "k_shear", "> 0 N/m", m.k_shear);
+  require(m.k_flexion > 0, "k_flexion", "> 0 N/m", m.k_flexion);
+  require(m.damping >= 0, "damping", ">= 0 N s/m", m.damping);
+  require(m.friction >= 0 && m.friction <= 1, "friction", "in [0, 1]", m.friction);
+  require(m.reflection >= 0 && m.reflection <= 1, "reflection", "in [0, 1]", m.reflection);
+  require(p.dt >= 0, "dt", ">= 0 s (0 = automatic)", p.dt);
+  require(p.dt_fraction > 0 && p.dt_fraction <= 1, "dt_fraction", "in (0, 1]", p.dt_fraction);
+  require(p.threshold > 0 && p.threshold < 1, "threshold", "in (0, 100) %", p.threshold);
+  require(p.stiff_factor >= 1, "stiff_factor", ">= 1", p.stiff_factor);
+  require(p.limit_passes >= 1, "limit_passes", ">= 1", p.limit_passes);
+  require(p.gravity.allFinite(), "gravity", "finite", p.gravity.norm());
+  require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m", p.seam_stiffness);
+  require(p.attraction_speed > 0, "attraction_speed", "> 0 m/s", p.attraction_speed);
+  require(p.merge_distance > 0, "merge_distance", "> 0 m", p.merge_distance);
+  require(p.max_speed > 0, "max_speed", "> 0 m/s", p.max_speed);
+  require(p.bounds_margin > 0, "bounds_margin", "> 0 m", p.bounds_margin);
+}
+
+// column i of a 3 x n matrix as a fixed-size vector reference
+inline Eigen::Ref<Vec3> col(Points3& m, Eigen::Index i) { return m.col(i); }
+
+}  // namespace
+
+Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParams& params)
+    : mesh_(std::move(mesh)), material_(material), params_(params) {
+  mesh_.validate("cloth");
+  validate(material_, params_);
+  const Eigen::Index nv = mesh_.positions.cols(), ns = mesh_.springs.cols();
+  // stiffness per spring from its kind (Eq. 2); kStiff raises all of them
+  const Real factor = params_.limit == Limit::kStiff ? params_.stiff_factor : Real(1);
+  const Real k_kind[kSpringKinds] = {material_.k_structural, material_.k_shear, material_.k_flexion};
+  k_.resize(ns);
+  for (Eigen::Index s = 0; s < ns; ++s) k_[s] = factor * k_kind[static_cast<int>(mesh_.kind[s])];
+  if (params_.seam_stiffness == 0) params_.seam_stiffness = factor * material_.k_structural;
+  m_ = mesh_.vertex_area * material_.density;
+  inv_m_ = m_.cwiseInverse();
+  for (auto a : mesh_.attached) inv_m_[a] = 0;
+  x_ = mesh_.positions;
+  v_ = Points3::Zero(3, nv);
+  f_ = Points3::Zero(3, nv);
+  mid_.resize(3, mesh_.quads.cols());
+  merged_.assign(static_cast<std::size_t>(mesh_.seam_pairs.cols()), 0);
+  start_box_ = bounding_box(x_);
+  // time step: given, checked against Eq. 4, or chosen from it
+  const Real bound = stable_dt();
+  if (params_.dt == 0) {
+    dt_ = params_.dt_fraction * bound;
+  } else if (params_.dt > bound && !params_.allow_unstable_dt) {
+    throw std::invalid_argument("dt = " + std::to_string(params_.dt) + " s exceeds the stability bound " +
+                                std::to_string(bound) +
+                                " s of dressing Eq. 4 (0.4 pi sqrt(m/K)); set allow_unstable_dt to run it anyway");
+  } else {
+    dt_ = params_.dt;
+  }
+}
+
+Real Simulator::stable_dt() const {
+  // dressing Eq. 4: dt <= 0.4 pi sqrt(m / K), K the highest stiffness, m the lightest point
+  Real k_max = k_.size() ? k_.maxCoeff() : Real(0);
+  if (mesh_.seam_pairs.cols() && params_.seam_method == SeamMethod::kElastic)
+    k_max = std::max(k_max, params_.seam_stiffness);
+  if (!(k_max > 0)) return Real(1e-2);
+  return Real(0.4 * M_PI) * std::sqrt(m_.minCoeff() / k_max);
+}
+
+bool Simulator::step() {
+  if (divergence_) return false;
+  Stopwatch cdr;
+  detect();
+  double cdr_ms = cdr.ms();
+  Stopwatch cs;
+  accumulate_forces();
+  double cs_ms = cs.ms();
+  cdr.restart();
+  if (params_.reaction_force) add_reaction_forces();
+  cdr_ms += cdr.ms();
+  cs.restart();
+  integrate_velocities();
+  limit_velocities();
+  if (phase_ == Phase::kSew && params_.seam_method == SeamMethod::kAttraction) attract_seams();
+  cs_ms += cs.ms();
+  cdr.restart();
+  respond();
+  cdr_ms += cdr.ms();
+  cs.restart();
+  integrate_positions();
+  limit_positions();
+  merge_seams();
+  cs_ms += cs.ms();
+  timings_.cdr_ms += cdr_ms;
+  timings_.cs_ms += cs_ms;
+  ++timings_.iterations;
+  ++iteration_;
+  return check_divergence();
+}
+
+void Simulator::detect() {
+  const Eigen::Index nv = x_.cols(), nq = params_.face_queries ? mesh_.quads.cols() : 0;
+  contacts_.resize(static_cast<std::size_t>(nv + nq));
+  if (!collider_) {
+    std::fill(contacts_.begin(), contacts_.end(), Contact{});
+    return;
+  }
+  collider_->query(PointsView(x_), {contacts_.data(), static_cast<std::size_t>(nv)});
+  if (nq == 0) return;
+  // quad midpoints: dressing section 6
+  for (Eigen::Index q = 0; q < nq; ++q)
+    mid_.col(q) = 0.25f * (x_.col(mesh_.quads(0, q)) + x_.col(mesh_.quads(1, q)) + x_.col(mesh_.quads(2, q)) +
+                           x_.col(mesh_.quads(3, q)));
+  collider_->query(PointsView(mid_.data(), static_cast<std::size_t>(nq)),
+                   {contacts_.data() + nv, static_cast<std::size_t>(nq)});
+}
+
+void Simulator::accumulate_forces() {
+  // gravity (off while sewing) and viscous damping -C_vd v (dressing section 3)
+  const Vec3 g = phase_ == Phase::kSew ? Vec3::Zero() : params_.gravity;
+  f_ = g * m_.transpose();
+  f_ -= material_.damping * v_;
+  // springs: dressing Eq. 2, f = -k (|d| - l0) d/|d| on the first end
+  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
+    const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
+    const Vec3 d = x_.col(a) - x_.col(b);
+    const Real len = d.norm();
+    if (!(len > 0)) continue;
+    const Vec3 fa = -k_[s] * (len - mesh_.rest_length[s]) / len * d;
+    col(f_, a) += fa;
+    col(f_, b) -= fa;
+  }
+  // elastic seams: zero-length springs between partners not yet merged
+  if (phase_ != Phase::kSew || params_.seam_method != SeamMethod::kElastic) return;
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
+    if (merged_[static_cast<std::size_t>(p)]) continue;
+    const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
+    const Vec3 fa = -params_.seam_stiffness * (x_.col(a) - x_.col(b));
+    col(f_, a) += fa;
+    col(f_, b) -= fa;
+  }
+}
+
+void Simulator::add_reaction_forces() {
+  // walking Eq. 16: f_reaction = -C_fric f_t - f_n for colliding points pushed into the body
+  for (Eigen::Index i = 0; i < x_.cols(); ++i) {
+    const Contact& c = contacts_[static_cast<std::size_t>(i)];
+    if (!c.hit) continue;
+    const Vec3 f = f_.col(i);
+    const Real fn_len = f.dot(c.normal);
+    if (fn_len >= 0) continue;
+    const Vec3 fn = fn_len * c.normal;
+    col(f_, i) += -material_.friction * (f - fn) - fn;
+  }
+}
+
+void Simulator::integrate_velocities() {
+  // dressing Eq. 3: a = f/m, v += dt a (attached vertices have 1/m = 0)
+  v_ += dt_ * (f_.array().rowwise() * inv_m_.transpose().array()).matrix();
+}
+
+void Simulator::limit_velocities() {
+  const Limit l = params_.limit;
+  if (l != Limit::kVelocity && l != Limit::kVelocityZero && l != Limit::kDirectional) return;
+  const Real max_len_factor = 1 + params_.threshold;
+  const Vec3 v_grav = params_.gravity * dt_;  // walking Eq. 6: v_grav = g dt
+  for (int pass = 0; pass < params_.limit_passes; ++pass)
+  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
+    const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
+    // the length this step would give (Eq. 3 position update): no spring may end it over-elongated
+    const Vec3 d = x_.col(b) - x_.col(a);  // p12 = p2 - p1
+    const Vec3 d_next = d + dt_ * (v_.col(b) - v_.col(a));
+    if (!(d_next.norm() > max_len_factor * mesh_.rest_length[s])) continue;
+    const Real len = d.norm();
+    if (!(len > 0)) continue;
+    const Vec3 u = d / len;
+    const Real va = v_.col(a).dot(u), vb = v_.col(b).dot(u);
+    if (vb - va <= 0) continue;  // only further elongation is forbidden: a spring may shorten
+    Real cos_a = 0;
+    if (l == Limit::kDirectional) {
+      // walking Eq. 6: v_dir = v_grav + v_object
+      const Vec3 v_dir = v_grav + spring_object_velocity(a, b);
+      cos_a = v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
+    }
+    auto [na, nb] = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b]);
+    // an attached end keeps its velocity and the free end follows it
+    if (inv_m_[a] == 0 && inv_m_[b] == 0) continue;
+    if (inv_m_[a] == 0) na = nb = va;
+    if (inv_m_[b] == 0) na = nb = vb;
+    col(v_, a) += (na - va) * u;
+    col(v_, b) += (nb - vb) * u;
+  }
+}
+
+Vec3 Simulator::spring_object_velocity(int a, int b) const {
+  // the velocity of the object the spring's ends collide with (zero when neither does)
+  const Contact& ca = contacts_[static_cast<std::size_t>(a)];
+  const Contact& cb = contacts_[static_cast<std::size_t>(b)];
+  if (ca.hit && cb.hit) return 0.5f * (ca.body_velocity + cb.body_velocity);
+  if (ca.hit) return ca.body_velocity;
+  if (cb.hit) return cb.body_velocity;
+  return Vec3::Zero();
+}
+
+void Simulator::attract_seams() {
+  // Durupinar Eq. 1: p1vel = c_attraction (p2 - p1)/|p2 - p1|, p2vel = -p1vel
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
+    if (merged_[static_cast<std::size_t>(p)]) continue;
+    const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
+    const Vec3 d = x_.col(b) - x_.col(a);
+    const Real len = d.norm();
+    if (!(len > 0)) continue;
+    // never overshoot: at most half the gap per step
+    const Real speed = std::min(params_.attraction_speed, 0.5f * len / dt_);
+    if (inv_m_[a] > 0) col(v_, a) = speed * d / len;
+    if (inv_m_[b] > 0) col(v_, b) = -speed * d / len;
+  }
+}
+
+void Simulator::respond() {
+  if (!collider_) return;
+  const Eigen::Index nv = x_.cols();
+  auto resolve = [&](const Vec3& v, const Contact& c) {
+    return collision_response(v, c, material_.friction, material_.reflection);
+  };
+  // vertex contacts first
+  std::vector<Vec3> face_sum;
+  std::vector<int> face_count;
+  for (Eigen::Index i = 0; i < nv; ++i) {
+    const Contact& c = contacts_[static_cast<std::size_t>(i)];
+    if (c.hit && inv_m_[i] > 0) col(v_, i) = resolve(v_.col(i), c);
+  }
+  if (!params_.face_queries) return;
+  // face-body: the quad midpoint's response goes to its four vertices, averaged (dressing section 6)
+  face_sum.assign(static_cast<std::size_t>(nv), Vec3::Zero());
+  face_count.assign(static_cast<std::size_t>(nv), 0);
+  for (Eigen::Index q = 0; q < mesh_.quads.cols(); ++q) {
+    const Contact& c = contacts_[static_cast<std::size_t>(nv + q)];
+    if (!c.hit) continue;
+    Vec3 vq = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) vq += 0.25f * v_.col(mesh_.quads(k, q));
+    const Vec3 r = resolve(vq, c);
+    for (int k = 0; k < 4; ++k) {
+      face_sum[static_cast<std::size_t>(mesh_.quads(k, q))] += r;
+      ++face_count[static_cast<std::size_t>(mesh_.quads(k, q))];
+    }
+  }
+  for (Eigen::Index i = 0; i < nv; ++i) {
+    const auto n = face_count[static_cast<std::size_t>(i)];
+    if (n && inv_m_[i] > 0) col(v_, i) = face_sum[static_cast<std::size_t>(i)] / Real(n);
+  }
+}
+
+void Simulator::integrate_positions() {
+  // dressing Eq. 3: p += dt v
+  x_ += dt_ * v_;
+}
+
+void Simulator::limit_positions() {
+  if (params_.limit != Limit::kPosition) return;
+  // Provot 1995: move the ends of springs stretched past (1 + threshold) l0 back to that length
+  const Real max_len_factor = 1 + params_.threshold;
+  for (int pass = 0; pass < params_.limit_passes; ++pass)
+    for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
+      const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
+      const Vec3 d = x_.col(b) - x_.col(a);
+      const Real len = d.norm(), max_len = max_len_factor * mesh_.rest_length[s];
+      const Real wa = inv_m_[a] > 0 ? Real(1) : Real(0), wb = inv_m_[b] > 0 ? Real(1) : Real(0);
+      if (!(len > max_len) || wa + wb == 0) continue;
+      // the velocities follow the moved positions, so Eq. 3 does not push them out again
+      const Vec3 corr = (len - max_len) / len * d / (wa + wb);
+      col(x_, a) += wa * corr;
+      col(x_, b) -= wb * corr;
+      col(v_, a) += (wa / dt_) * corr;
+      col(v_, b) -= (wb / dt_) * corr;
+    }
+}
+
+void Simulator::merge_seams() {
+  // sewn pairs closer than merge_distance become one point (Durupinar 3.1): from then on both
+  // partners share the mass-weighted mean position and velocity
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
+    auto& merged = merged_[static_cast<std::size_t>(p)];
+    const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
+    if (!merged && (x_.col(a) - x_.col(b)).norm() < params_.merge_distance) merged = 1;
+    if (!merged) continue;
+    const Real wa = m_[a], wb = m_[b];
+    const Vec3 xm = (wa * x_.col(a) + wb * x_.col(b)) / (wa + wb);
+    const Vec3 vm = (wa * v_.col(a) + wb * v_.col(b)) / (wa + wb);
+    if (inv_m_[a] > 0) col(x_, a) = xm, col(v_, a) = vm;
+    if (inv_m_[b] > 0) col(x_, b) = xm, col(v_, b) = vm;
+  }
+}
+
+bool Simulator::check_divergence() {
+  // NaN, runaway speed, or a vertex far outside the scene: stop and say where and when
+  const Real max_speed2 = params_.max_speed * params_.max_speed;
+  const Vec3 lo = start_box_.min.array() - params_.bounds_margin;
+  const Vec3 hi = start_box_.max.array() + params_.bounds_margin;
+  for (Eigen::Index i = 0; i < x_.cols(); ++i) {
+    const Vec3 x = x_.col(i), v = v_.col(i);
+    std::string reason;
+    if (!x.allFinite() || !v.allFinite())
+      reason = "NaN or infinite position/velocity";
+    else if (v.squaredNorm() > max_speed2)
+      reason = "speed " + std::to_string(v.norm()) + " m/s above max_speed";
+    else if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any())
+      reason = "left the scene bounds";
+    if (reason.empty()) continue;
+    divergence_ = Divergence{iteration_, phase_, static_cast<int>(i), reason};
+    return false;
+  }
+  return true;
+}
+
+void Simulator::attach(const BodyFrame& body) {
+  // bind each attached vertex to its closest body triangle (Durupinar 3.2)
+  attach_tri_.clear();
+  attach_bary_.resize(3, static_cast<Eigen::Index>(mesh_.attached.size()));
+  attach_offset_.resize(3, attach_bary_.cols());
+  for (std::size_t i = 0; i < mesh_.attached.size(); ++i) {
+    const ClosestPoint cp = closest_point_brute(body, x_.col(mesh_.attached[i]));
+    attach_tri_.push_back(cp.triangle);
+    attach_bary_.col(static_cast<Eigen::Index>(i)) = cp.bary;
+    attach_offset_.col(static_cast<Eigen::Index>(i)) = x_.col(mesh_.attached[i]) - cp.point;
+  }
+}
+
+void Simulator::follow_attachments(const BodyFrame& body) {
+  for (std::size_t i = 0; i < attach_tri_.size(); ++i) {
+    if (attach_tri_[i] < 0) continue;
+    Vec3 x = Vec3::Zero(), v = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) {
+      const int bv = body.triangles(k, attach_tri_[i]);
+      x += attach_bary_(k, static_cast<Eigen::Index>(i)) * body.positions.col(bv);
+      v += attach_bary_(k, static_cast<Eigen::Index>(i)) * body.velocities.col(bv);
+    }
+    col(x_, mesh_.attached[i]) = x + attach_offset_.col(static_cast<Eigen::Index>(i));
+    col(v_, mesh_.attached[i]) = v;
+  }
+}
+
+Real Simulator::seam_gap_max() const {
+  Real gap = 0;
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
+    gap = std::max(gap, (x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm());
+  return gap;
+}
+
+Real Simulator::sewn_fraction() const {
+  if (merged_.empty()) return 1;
+  return Real(std::count(merged_.begin(), merged_.end(), 1)) / Real(merged_.size());
+}
+
+StrainStats Simulator::strain() const {
+  std::vector<Real> e;
+  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
+    if (mesh_.kind[s] != SpringKind::kStructural) continue;
+    const Real len = (x_.col(mesh_.springs(0, s)) - x_.col(mesh_.springs(1, s))).norm();
+    e.push_back((len - mesh_.rest_length[s]) / mesh_.rest_length[s]);
+  }
+  if (e.empty()) return {};
+  const std::size_t k = std::min(e.size() - 1, static_cast<std::size_t>(0.99 * double(e.size())));
+  std::nth_element(e.begin(), e.begin() + static_cast<long>(k), e.end());
+  StrainStats st;
+  st.p99 = e[k];
+  st.max = *std::max_element(e.begin(), e.end());
+  return st;
+}
+
+Real Simulator::max_speed() const { return v_.cols() ? v_.colwise().norm().maxCoeff() : Real(0); }
+
+Real Simulator::kinetic_energy() const {
+  return 0.5f * (v_.colwise().squaredNorm().transpose().cwiseProduct(m_)).sum();
+}
+
+}  // namespace clothbench

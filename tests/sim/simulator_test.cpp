@@ -1,0 +1,246 @@
+#include "clothbench/sim/simulator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "clothbench/sim/sphere_collider.hpp"
+#include "test_support.hpp"
+
+namespace clothbench {
+namespace {
+
+// two free particles of mass m joined by one spring of stiffness k, stretched by `stretch`
+ClothMesh two_particles(Real rest, Real stretch) {
+  ClothMesh c;
+  c.positions.resize(3, 2);
+  c.positions.col(0) = Vec3(0, 0, 0);
+  c.positions.col(1) = Vec3(rest + stretch, 0, 0);
+  c.vertex_area = Scalars::Constant(2, 1);
+  c.springs.resize(2, 1);
+  c.springs << 0, 1;
+  c.rest_length = Scalars::Constant(1, rest);
+  c.kind = {SpringKind::kStructural};
+  c.quads.resize(4, 0);
+  c.seam_pairs.resize(2, 0);
+  c.panel = {0, 0};
+  c.panel_names = {"pair"};
+  return c;
+}
+
+// a horizontal square cloth of n x n vertices, `size` metres wide, pinned at its two far corners
+ClothMesh pinned_square(int n, Real size) {
+  ClothMesh c = make_grid_cloth(n, n, size / Real(n - 1), Vec3(-size / 2, 1, -size / 2), Vec3::UnitX(), Vec3::UnitZ());
+  c.attached = {0, n - 1};
+  return c;
+}
+
+Material soft_material() {
+  Material m;
+  m.damping = 0.001f;
+  return m;
+}
+
+TEST(Simulator, TwoParticleSpringPeriodMatchesTheory) {
+  Material mat;
+  mat.density = 0.01f;  // 10 g per particle
+  mat.k_structural = 4;
+  mat.damping = 0;
+  SolverParams p;
+  p.gravity = Vec3::Zero();
+  p.limit = Limit::kNone;
+  p.dt = 1e-4f;
+  Simulator sim(two_particles(0.1f, 0.01f), mat, p);
+  // relative coordinate oscillates with omega = sqrt(2k/m)
+  const double omega = std::sqrt(2 * 4 / 0.01), period = 2 * M_PI / omega;
+  std::vector<double> up_crossings;
+  double prev = 0.01;
+  for (int i = 0; i < 20000; ++i) {
+    sim.step();
+    const double ext = (sim.positions().col(1) - sim.positions().col(0)).norm() - 0.1;
+    if (prev < 0 && ext >= 0) up_crossings.push_back(i * 1e-4);
+    prev = ext;
+  }
+  ASSERT_GE(up_crossings.size(), 3u);
+  const double measured = (up_crossings.back() - up_crossings.front()) / double(up_crossings.size() - 1);
+  EXPECT_NEAR(measured, period, 0.01 * period) << "theory " << period << " s";
+}
+
+// run a pinned square under gravity; returns true when it did not diverge
+bool runs_stably(Real dt_multiple, int steps) {
+  SolverParams p;
+  p.limit = Limit::kNone;
+  p.allow_unstable_dt = true;
+  Simulator probe(pinned_square(15, 0.5f), soft_material(), p);
+  p.dt = dt_multiple * probe.stable_dt();
+  Simulator sim(pinned_square(15, 0.5f), soft_material(), p);
+  for (int i = 0; i < steps && sim.step();) ++i;
+  return !sim.divergence().has_value();
+}
+
+TEST(Simulator, EulerStableBelowEq4BoundAndUnstableWellAbove) {
+  EXPECT_TRUE(runs_stably(0.95f, 3000));
+  EXPECT_FALSE(runs_stably(3.0f, 3000));
+}
+
+TEST(Simulator, DtAboveTheBoundIsRejectedUnlessAllowed) {
+  SolverParams p;
+  Simulator probe(pinned_square(5, 0.2f), soft_material(), p);
+  p.dt = 2 * probe.stable_dt();
+  EXPECT_THROW(Simulator(pinned_square(5, 0.2f), soft_material(), p), std::invalid_argument);
+  p.allow_unstable_dt = true;
+  EXPECT_NO_THROW(Simulator(pinned_square(5, 0.2f), soft_material(), p));
+}
+
+TEST(Simulator, InvalidParametersNameTheParameter) {
+  auto message = [](auto mutate) {
+    Material m;
+    SolverParams p;
+    mutate(m, p);
+    try {
+      Simulator(pinned_square(5, 0.2f), m, p);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([](Material& m, SolverParams&) { m.density = -1; }).find("density"), std::string::npos);
+  EXPECT_NE(message([](Material& m, SolverParams&) { m.k_shear = 0; }).find("k_shear"), std::string::npos);
+  EXPECT_NE(message([](Material& m, SolverParams&) { m.damping = std::nanf(""); }).find("damping"), std::string::npos);
+  EXPECT_NE(message([](Material&, SolverParams& p) { p.threshold = 1.5f; }).find("threshold"), std::string::npos);
+  EXPECT_NE(message([](Material&, SolverParams& p) { p.threshold = -0.1f; }).find("threshold"), std::string::npos);
+  EXPECT_THROW(parse_limit("rubber"), std::invalid_argument);
+  EXPECT_THROW(parse_seam_method("glue"), std::invalid_argument);
+}
+
+// max structural strain of a soft square hanging in a vertical plane from its two top corners
+// (a global stretch: the whole weight hangs from two points) after `seconds`; nullopt if diverged
+std::optional<Real> hanging_strain(Limit limit, int passes, Real seconds = 2.0f) {
+  const int n = 21;
+  const Real size = 0.6f;
+  ClothMesh c = make_grid_cloth(n, n, size / Real(n - 1), Vec3(-size / 2, 1, 0), Vec3::UnitX(), -Vec3::UnitY());
+  c.attached = {0, n - 1};
+  Material m = soft_material();
+  m.k_structural = 5;  // soft springs: the plain model visibly stretches under its own weight
+  m.k_shear = 2;
+  m.k_flexion = 1;
+  SolverParams p;
+  p.limit = limit;
+  p.threshold = 0.10f;
+  p.limit_passes = passes;
+  p.dt_fraction = 0.5f;
+  Simulator sim(c, m, p);
+  const int steps = static_cast<int>(seconds / sim.dt());
+  for (int i = 0; i < steps && sim.step(); ++i) {
+  }
+  if (sim.divergence()) return std::nullopt;
+  return sim.strain().max;
+}
+
+std::string show(const std::optional<Real>& s) { return s ? std::to_string(*s) : std::string("diverged"); }
+
+TEST(Simulator, VelocityLimitsHoldStrainWhereNoneStretches) {
+  const auto none = hanging_strain(Limit::kNone, 1);
+  const auto velocity = hanging_strain(Limit::kVelocity, 100);
+  const auto zero = hanging_strain(Limit::kVelocityZero, 100);
+  // the papers' single pass per iteration, reported (see the issue note: it leaks under a sustained load)
+  const auto velocity1 = hanging_strain(Limit::kVelocity, 1);
+  const auto directional1 = hanging_strain(Limit::kDirectional, 1);
+  std::printf("[ strain  ] threshold 0.10: none %s | 100 passes: velocity %s velocity-zero %s | 1 pass: velocity %s "
+              "directional %s\n", show(none).c_str(), show(velocity).c_str(), show(zero).c_str(),
+              show(velocity1).c_str(), show(directional1).c_str());
+  ASSERT_TRUE(none && velocity && zero);
+  EXPECT_GT(*none, 0.5f);  // far beyond the 10 % threshold
+  EXPECT_LE(*velocity, 0.11f);
+  EXPECT_LE(*zero, 0.11f);
+}
+
+TEST(Simulator, PositionVersusVelocityOnGlobalStretch) {
+  // dressing 4.2-4.3 claim velocity modification beats Provot on a global stretch; both are
+  // measured here with the same number of passes and reported (the claims experiment reads them)
+  for (int passes : {1, 30}) {
+    const auto position = hanging_strain(Limit::kPosition, passes);
+    const auto velocity = hanging_strain(Limit::kVelocity, passes);
+    std::printf("[ strain  ] global stretch, %d passes: position (Provot) %s, velocity %s\n", passes,
+                show(position).c_str(), show(velocity).c_str());
+    ASSERT_TRUE(position.has_value());
+    EXPECT_LT(*position, *hanging_strain(Limit::kNone, 1));  // Provot limits the stretch
+  }
+}
+
+TEST(Simulator, StiffLimitShrinksTheTimeStep) {
+  SolverParams p;
+  Simulator plain(pinned_square(5, 0.2f), soft_material(), p);
+  p.limit = Limit::kStiff;
+  p.stiff_factor = 16;
+  Simulator stiff(pinned_square(5, 0.2f), soft_material(), p);
+  EXPECT_NEAR(stiff.dt() / plain.dt(), 0.25, 1e-5);  // Eq. 4: dt ~ 1/sqrt(K)
+}
+
+TEST(CollisionResponse, HandComputedEq15) {
+  Contact c;
+  c.hit = true;
+  c.normal = Vec3(0, 1, 0);
+  // static body: v = (2, -3, 0) -> v_t = (2, 0, 0), v_n = (0, -3, 0)
+  EXPECT_TRUE(test::near_vec(collision_response(Vec3(2, -3, 0), c, 0.5f, 0.2f), Vec3(1, 0.6f, 0), 1e-6));
+  // moving body (walking Eq. 15): relative to v_object = (0, 1, 1)
+  c.body_velocity = Vec3(0, 1, 1);
+  // v_rel = (2, -4, -1): v_t = (2, 0, -1), v_n = (0, -4, 0) -> 0.5 v_t + 0.8 + v_obj
+  EXPECT_TRUE(test::near_vec(collision_response(Vec3(2, -3, 0), c, 0.5f, 0.2f), Vec3(1, 1.8f, 0.5f), 1e-6));
+  // a point leaving the body keeps its normal component
+  c.body_velocity = Vec3::Zero();
+  EXPECT_TRUE(test::near_vec(collision_response(Vec3(0, 2, 0), c, 0.5f, 0.2f), Vec3(0, 2, 0), 1e-6));
+}
+
+TEST(LimitStretchVelocity, DirectionalRulePicksRearPointBySignOfCos) {
+  // cos > 0: p1 is the rear point and takes p2's component
+  auto [a1, b1] = limit_stretch_velocity(Limit::kDirectional, -1, 3, 0.9f);
+  EXPECT_FLOAT_EQ(a1, 3);
+  EXPECT_FLOAT_EQ(b1, 3);
+  auto [a2, b2] = limit_stretch_velocity(Limit::kDirectional, -1, 3, -0.9f);
+  EXPECT_FLOAT_EQ(a2, -1);
+  EXPECT_FLOAT_EQ(b2, -1);
+  auto [a3, b3] = limit_stretch_velocity(Limit::kDirectional, -1, 3, 0.2f);  // perpendicular: Eq. 5
+  EXPECT_FLOAT_EQ(a3, 1);
+  EXPECT_FLOAT_EQ(b3, 1);
+  auto [a4, b4] = limit_stretch_velocity(Limit::kVelocityZero, -1, 3, 0);
+  EXPECT_FLOAT_EQ(a4, 0);
+  EXPECT_FLOAT_EQ(b4, 0);
+}
+
+TEST(Simulator, ClothDroppedOnSphereRestsOutsideIt) {
+  ClothMesh cloth = make_grid_cloth(25, 25, 0.03f, Vec3(-0.36f, 0.45f, -0.36f), Vec3::UnitX(), Vec3::UnitZ());
+  SolverParams p;
+  Material m = soft_material();
+  m.damping = 0.005f;
+  Simulator sim(cloth, m, p);
+  ColliderOptions opt;
+  SphereCollider sphere(Vec3(0, 0, 0), 0.3f, opt);
+  sim.set_collider(&sphere);
+  const int steps = static_cast<int>(3.0f / sim.dt());
+  for (int i = 0; i < steps && sim.step(); ++i) {
+  }
+  ASSERT_FALSE(sim.divergence().has_value()) << sim.divergence()->reason;
+  Real deepest = 0;
+  for (int v = 0; v < sim.positions().cols(); ++v)
+    deepest = std::min(deepest, Real(sim.positions().col(v).norm() - 0.3f));
+  EXPECT_GT(deepest, -opt.tol) << "a vertex is deeper than tol";
+  EXPECT_GT(sphere.stats().hits, 0);  // it did land on the sphere
+}
+
+TEST(Simulator, DivergenceIsReportedWithIterationPhaseAndVertex) {
+  SolverParams p;
+  Simulator sim(pinned_square(5, 0.2f), soft_material(), p);
+  sim.velocities()(1, 7) = std::nanf("");
+  EXPECT_FALSE(sim.step());
+  ASSERT_TRUE(sim.divergence().has_value());
+  EXPECT_EQ(sim.divergence()->iteration, 1);
+  EXPECT_GE(sim.divergence()->vertex, 0);
+  EXPECT_FALSE(sim.step());  // stays stopped
+}
+
+}  // namespace
+}  // namespace clothbench
