@@ -10,5 +10,6 @@ namespace clothbench::cli {
 using Action = std::function<int()>;
 
 void add_colliders_command(CLI::App& app, Action& action);
+void add_demo_command(CLI::App& app, Action& action);
 
 }  // namespace clothbench::cli

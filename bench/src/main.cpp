@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   clothbench::cli::Action action;
   clothbench::cli::add_colliders_command(app, action);
+  clothbench::cli::add_demo_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
