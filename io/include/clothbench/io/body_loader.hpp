@@ -1,0 +1,65 @@
+#pragma once
+/// Bodies and their motion through assimp: a welded, closed rest mesh in the DESIGN.md frame
+/// (metres, +Y up, soles at y = 0, facing +Z) plus its skeleton animations, evaluated by linear
+/// blend skinning into BodyFrames at any time t.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "clothbench/sim/body_frame.hpp"
+
+namespace clothbench {
+
+/// How load_body treats the file.
+struct BodyLoadOptions {
+  bool require_closed = true;  ///< throw InputError when the welded mesh has boundary/non-manifold edges
+  bool normalise = true;       ///< convert to metres, +Y up, soles at y = 0 (else keep the file's frame)
+};
+
+/// One animation of the file.
+struct AnimationInfo {
+  std::string name;             ///< the file's name (or "animation_K" when it has none)
+  double duration_s = 0;        ///< length [s]; valid times are [0, duration_s]
+  double ticks_per_second = 0;  ///< the file's time unit (assimp ticks per second)
+  int channels = 0;             ///< animated nodes
+};
+
+class BodyModelImpl;
+
+/// Rest mesh + skin + animations; cheap to evaluate at any t. Movable, not copyable.
+class BodyModel {
+ public:
+  explicit BodyModel(std::unique_ptr<BodyModelImpl> impl);
+  BodyModel(BodyModel&&) noexcept;
+  BodyModel& operator=(BodyModel&&) noexcept;
+  BodyModel(const BodyModel&) = delete;
+  BodyModel& operator=(const BodyModel&) = delete;
+  ~BodyModel();
+
+  /// The welded, normalised rest (bind) mesh with angle-weighted normals and zero velocities.
+  const BodyFrame& rest() const;
+  /// Number of skin bones (0 for a static mesh).
+  int bone_count() const;
+  /// The file's animations, in file order.
+  const std::vector<AnimationInfo>& animations() const;
+  /// Index of an animation by name; throws InputError listing the names when unknown.
+  int animation_index(const std::string& name) const;
+  /// Skinned frame at time t [s] (LBS, the file's interpolation); velocities from the motion
+  /// itself; walk_in_place removes the root's horizontal travel (positions and velocities).
+  /// Throws InputError when t is outside [0, duration] or the animation index is invalid.
+  BodyFrame frame(int animation, double t, bool walk_in_place = false) const;
+  /// As frame(), reusing the storage of `out` (no allocation once `out` has the right size).
+  void frame_into(BodyFrame& out, int animation, double t, bool walk_in_place = false) const;
+  /// The file this model was loaded from.
+  const std::string& path() const;
+
+ private:
+  std::unique_ptr<BodyModelImpl> impl_;
+};
+
+/// Loads any format assimp reads. Throws InputError("PATH: what is wrong") for a missing, unreadable,
+/// empty, non-triangulable file, or (require_closed) a mesh that is not closed after welding
+/// ("... is not closed: N boundary edges").
+BodyModel load_body(const std::string& path, const BodyLoadOptions& options = {});
+
+}  // namespace clothbench
