@@ -1,0 +1,104 @@
+#pragma once
+/// Garment patterns (2D panels in cm, placements, seams) and their meshing into regular grids
+/// of mass points (dressing section 3, Durupinar section 2), placed around a body in 3D.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "clothbench/sim/body_frame.hpp"
+#include "clothbench/sim/cloth.hpp"
+
+namespace clothbench {
+
+using Vec2d = Eigen::Vector2d;  ///< a pattern point [cm]
+
+/// Where a panel goes around the body. The panel's 2D frame (u right, v up, in cm) is laid in the
+/// body's XY plane facing +Z, optionally wrapped around a vertical axis `wrap_radius_cm` behind it,
+/// then rotated by `roll_deg` about +Z (limb tilt, positive turns +Y towards -X) and `yaw_deg` about +Y
+/// (180 = a back panel facing -Z), and finally moved so that the pattern origin (0, 0) lands at
+/// the landmark `anchor` (fractions of the body's bounding box, 0..1 per axis) plus `offset_cm`.
+struct Placement {
+  Vec3 anchor = Vec3(0.5f, 0.5f, 0.5f);  ///< fractions of the body bounding box (x, y, z)
+  Vec3 offset_cm = Vec3::Zero();         ///< added after the anchor [cm]
+  Real yaw_deg = 0;                      ///< rotation about +Y [deg]
+  Real roll_deg = 0;                     ///< rotation about +Z [deg], applied before yaw
+  Real wrap_radius_cm = 0;               ///< 0 = flat; > 0 wraps the panel around a vertical axis [cm]
+};
+
+/// One panel: a closed outline (curves already flattened), split into named edges.
+struct Panel {
+  std::string name;
+  std::vector<Vec2d> outline;     ///< outline points [cm], not repeating the first; >= 3
+  std::vector<int> edge_begin;    ///< outline index where each edge starts (ascending, first 0)
+  Placement placement;
+  std::vector<int> attached_edges;  ///< edges whose mesh vertices are bound to the body (Durupinar 3.2)
+
+  int edge_count() const { return static_cast<int>(edge_begin.size()); }
+};
+
+/// A seam: edge `edge_a` of panel `panel_a` sewn to edge `edge_b` of panel `panel_b`, both walked
+/// in their outline direction, or one against the other when `reversed`.
+struct Seam {
+  int panel_a = 0, edge_a = 0;
+  int panel_b = 0, edge_b = 0;
+  bool reversed = true;  ///< true: start of a meets end of b (the usual case for mirrored panels)
+};
+
+/// A garment's cutting patterns.
+struct Pattern {
+  std::string name;
+  std::vector<Panel> panels;
+  std::vector<Seam> seams;
+};
+
+/// Grid resolution: `spacing_cm` > 0 wins; otherwise the spacing is solved so that the whole
+/// garment has `target_vertices` vertices (within a few per cent).
+struct MeshingOptions {
+  double spacing_cm = 0;
+  int target_vertices = 0;
+  bool attach = true;  ///< honour the panels' attached edges
+};
+
+/// The meshed pattern before placement: the cloth with 2D pattern coordinates kept.
+struct MeshedPattern {
+  ClothMesh mesh;                   ///< positions hold (u, v, 0) [m] until placed
+  Eigen::Matrix2Xd uv;              ///< pattern coordinates [cm] (2 x nv)
+  std::vector<std::uint8_t> boundary;  ///< 1 for vertices placed on the outline (nv)
+  std::vector<int> seam_pair_count; ///< vertex pairs per seam
+  double spacing_cm = 0;
+};
+
+/// Throws std::invalid_argument naming the panel/seam when the pattern is malformed: fewer than 3
+/// points, bad edge indices, an edge with no segment, a self-intersecting outline, a seam naming a
+/// missing panel or edge, or the same edge pair sewn twice.
+void validate_pattern(const Pattern& pattern);
+
+/// True when two non-adjacent segments of the closed outline intersect.
+bool outline_self_intersects(const std::vector<Vec2d>& outline);
+
+/// Meshes every panel into a regular grid at `spacing_cm` (dressing section 3): grid nodes inside
+/// the outline are kept; the ring of outside nodes 4-adjacent to them (Durupinar's Bresenham
+/// boundary) is snapped onto the closest outline point, so boundary vertices lie exactly on the
+/// outline. Springs (structural, shear, flexion) join kept grid neighbours, rest lengths from the
+/// 2D pattern; quads where all four corners are kept.
+MeshedPattern mesh_pattern(const Pattern& pattern, double spacing_cm, bool attach = true);
+
+/// Meshes with `options`: a fixed spacing, or the spacing whose vertex count is closest to the target.
+MeshedPattern mesh_pattern(const Pattern& pattern, const MeshingOptions& options);
+
+/// Places a meshed pattern around `body` (Placement above) and returns the 3D cloth.
+ClothMesh place_garment(const MeshedPattern& meshed, const Pattern& pattern, const BodyFrame& body);
+
+/// mesh_pattern + place_garment.
+ClothMesh build_garment(const Pattern& pattern, const MeshingOptions& options, const BodyFrame& body);
+
+/// Distance [cm] from `p` to the closed outline.
+double distance_to_outline(const std::vector<Vec2d>& outline, const Vec2d& p);
+
+/// Points of a quadratic (one control point) or cubic (two) Bezier from a to b, excluding a,
+/// including b; `segments` >= 1.
+std::vector<Vec2d> flatten_bezier(const Vec2d& a, const std::vector<Vec2d>& controls, const Vec2d& b,
+                                  int segments);
+
+}  // namespace clothbench
