@@ -51,10 +51,24 @@ bool segments_cross(const Vec2d& a, const Vec2d& b, const Vec2d& c, const Vec2d&
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
 }
 
-int edge_of_segment(const Panel& p, int segment) {
-  int e = 0;
-  while (e + 1 < p.edge_count() && p.edge_begin[static_cast<std::size_t>(e + 1)] <= segment) ++e;
-  return e;
+
+// Adds a boundary vertex at `q` to every edge it lies on (corners belong to two), keyed by its
+// arc position along the edge as a fraction of the edge length.
+void add_to_edges(const Panel& p, const Vec2d& q, int v, std::vector<std::vector<std::pair<double, int>>>& ev) {
+  const int n = static_cast<int>(p.outline.size());
+  for (int e = 0; e < p.edge_count(); ++e) {
+    const int s0 = p.edge_begin[static_cast<std::size_t>(e)];
+    const int s1 = e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n;
+    double len = 0, at = -1;
+    for (int s = s0; s < s1; ++s) {
+      const Vec2d a = p.outline[static_cast<std::size_t>(s)], b = p.outline[static_cast<std::size_t>((s + 1) % n)];
+      const double l = (b - a).norm();
+      const double t = l > 0 ? std::clamp((q - a).dot(b - a) / (l * l), 0.0, 1.0) : 0.0;
+      if (at < 0 && (a + t * (b - a) - q).norm() < 1e-9 * (1 + l)) at = len + t * l;
+      len += l;
+    }
+    if (at >= 0 && len > 0) ev[static_cast<std::size_t>(e)].push_back({at / len, v});
+  }
 }
 
 // One meshed panel: vertices (uv), which are on the outline, and per edge the boundary vertices
@@ -107,7 +121,7 @@ PanelGrid grid_panel(const Panel& p, double h) {
       id[k] = static_cast<int>(g.uv.size());
       g.uv.push_back(c.point);
       g.boundary.push_back(1);
-      g.edge_vertices[static_cast<std::size_t>(edge_of_segment(p, c.segment))].push_back({c.segment + c.t, id[k]});
+      add_to_edges(p, c.point, id[k], g.edge_vertices);
     }
   for (auto& ev : g.edge_vertices) std::sort(ev.begin(), ev.end());
   // springs and quads between kept grid neighbours, rest lengths from the pattern
@@ -168,26 +182,25 @@ PanelGrid grid_panel(const Panel& p, double h) {
   return g;
 }
 
-// Pairs two ordered vertex runs by normalised arc position: every vertex of the longer run gets
-// the vertex of the shorter run nearest in relative position.
+// Pairs two vertex runs by arc position (fraction of the edge length, so edges of different
+// length or count match): every vertex of the shorter run gets the vertex of the longer run
+// nearest in relative position (Durupinar section 2: closest vertex on the second panel); driving
+// from the shorter run never sews two neighbours of one panel onto one point.
 std::vector<std::array<int, 2>> match_runs(const std::vector<std::pair<double, int>>& a,
                                            const std::vector<std::pair<double, int>>& b, bool reversed) {
   std::vector<std::array<int, 2>> out;
   if (a.empty() || b.empty()) return out;
-  auto rel = [](const std::vector<std::pair<double, int>>& r, std::size_t i) {
-    const double s0 = r.front().first, s1 = r.back().first;
-    return s1 > s0 ? (r[i].first - s0) / (s1 - s0) : 0.0;
-  };
-  const bool a_long = a.size() >= b.size();
-  const auto& lo = a_long ? a : b;
-  const auto& sh = a_long ? b : a;
+  auto rel = [](const std::vector<std::pair<double, int>>& r, std::size_t i) { return r[i].first; };
+  const bool a_drives = a.size() < b.size();  // 'lo' drives: the shorter run
+  const auto& lo = a_drives ? a : b;
+  const auto& sh = a_drives ? b : a;
   for (std::size_t i = 0; i < lo.size(); ++i) {
     double t = rel(lo, i);
     if (reversed) t = 1 - t;
     std::size_t best = 0;
     for (std::size_t j = 1; j < sh.size(); ++j)
       if (std::abs(rel(sh, j) - t) < std::abs(rel(sh, best) - t)) best = j;
-    out.push_back(a_long ? std::array<int, 2>{lo[i].second, sh[best].second}
+    out.push_back(a_drives ? std::array<int, 2>{lo[i].second, sh[best].second}
                          : std::array<int, 2>{sh[best].second, lo[i].second});
   }
   return out;
