@@ -6,6 +6,20 @@
 #include "clothbench/sim/brute_collider.hpp"
 #include "clothbench/io/errors.hpp"
 
+// each backend's header exists only when its module was configured (CMake option on)
+#if defined(CLOTHBENCH_WITH_GL) && __has_include("clothbench/collide_is/image_space_collider.hpp")
+#include "clothbench/collide_is/image_space_collider.hpp"
+#define CLOTHBENCH_HAS_IS 1
+#endif
+#if defined(CLOTHBENCH_WITH_FCL) && __has_include("clothbench/collide_os/fcl_collider.hpp")
+#include "clothbench/collide_os/fcl_collider.hpp"
+#define CLOTHBENCH_HAS_FCL 1
+#endif
+#if defined(CLOTHBENCH_WITH_EMBREE) && __has_include("clothbench/collide_os/embree_collider.hpp")
+#include "clothbench/collide_os/embree_collider.hpp"
+#define CLOTHBENCH_HAS_EMBREE 1
+#endif
+
 namespace clothbench {
 
 namespace {
@@ -19,6 +33,26 @@ struct Entry {
 
 std::vector<Entry> entries() {
   std::vector<Entry> e;
+  const std::string is_desc = "image space: front/back depth, normal, velocity maps ";
+#ifdef CLOTHBENCH_HAS_IS
+  e.push_back({{"is-gl", is_desc + "rendered with OpenGL (OSMesa)", true, "CLOTHBENCH_WITH_GL"}, make_is_gl_collider});
+  e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", true, "CLOTHBENCH_WITH_GL"}, make_is_cpu_collider});
+#else
+  e.push_back({{"is-gl", is_desc + "rendered with OpenGL (OSMesa)", false, "CLOTHBENCH_WITH_GL"}, {}});
+  e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", false, "CLOTHBENCH_WITH_GL"}, {}});
+#endif
+  const std::string fcl_desc = "object space: FCL OBBRSS tree, closest point per query, refit";
+  const std::string embree_desc = "object space: Embree BVH, rtcPointQuery closest point, refit";
+#ifdef CLOTHBENCH_HAS_FCL
+  e.push_back({{"fcl", fcl_desc, true, "CLOTHBENCH_WITH_FCL"}, make_fcl_collider});
+#else
+  e.push_back({{"fcl", fcl_desc, false, "CLOTHBENCH_WITH_FCL"}, {}});
+#endif
+#ifdef CLOTHBENCH_HAS_EMBREE
+  e.push_back({{"embree", embree_desc, true, "CLOTHBENCH_WITH_EMBREE"}, make_embree_collider});
+#else
+  e.push_back({{"embree", embree_desc, false, "CLOTHBENCH_WITH_EMBREE"}, {}});
+#endif
   e.push_back({{"brute", "exact, every triangle per point (tests and oracle reference)", true, ""},
                [](const ColliderOptions& o) { return std::make_unique<BruteForceCollider>(o); }});
   return e;

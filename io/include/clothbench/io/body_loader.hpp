@@ -13,6 +13,7 @@ namespace clothbench {
 /// How load_body treats the file.
 struct BodyLoadOptions {
   bool require_closed = true;  ///< throw InputError when the welded mesh has boundary/non-manifold edges
+  bool drop_open_parts = true; ///< remove small open parts (< 10 % of the vertices: eyes, lashes), reported
   bool normalise = true;       ///< convert to metres, +Y up, soles at y = 0 (else keep the file's frame)
 };
 
@@ -38,6 +39,9 @@ class BodyModel {
 
   /// The welded, normalised rest (bind) mesh with angle-weighted normals and zero velocities.
   const BodyFrame& rest() const;
+  /// Small open parts removed at load (drop_open_parts) and their vertex count.
+  int dropped_parts() const;
+  int dropped_vertices() const;
   /// Number of skin bones (0 for a static mesh).
   int bone_count() const;
   /// The file's animations, in file order.
