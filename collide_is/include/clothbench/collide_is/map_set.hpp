@@ -1,0 +1,119 @@
+#pragma once
+/// Front and back depth, normal and velocity maps of a body (dressing paper section 5, walking
+/// paper section 4), the cameras that produce them, and the two renderers that draw them:
+/// OpenGL through OSMesa ("gl") and our CPU rasteriser ("cpu"), which give the same coverage.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "clothbench/sim/body_frame.hpp"
+#include "clothbench/sim/collider.hpp"
+
+namespace clothbench {
+
+/// The two orthographic cameras of walking paper section 4, both looking at the centre of the
+/// body's bounding box: the front camera sits on the box's +Z face and looks along -Z, the back
+/// camera on the -Z face looks along +Z. Both see the same square of the x-y plane.
+///
+/// Window coordinates (pixels, origin at the map's lower-left corner, +y up) of a world point:
+///   front: (u, v) = ((x - x0) / pixel, (y - y0) / pixel)            (dressing Eq. 8, X_front)
+///   back:  (size - u, v)                                               (dressing Eq. 8, X_back)
+/// Depth (z-buffer) runs 0 at the near plane to 1 at the far plane:
+///   front: zbuf = (z_max - z) / (z_max - z_min),  back: zbuf = (z - z_min) / (z_max - z_min).
+struct MapFrame {
+  int size = 0;       ///< pixels per side of each square map
+  Real x0 = 0;        ///< world x of the map's left edge (front view) [m]
+  Real y0 = 0;        ///< world y of the map's bottom edge [m]
+  Real pixel = 0;     ///< side of one pixel [m] (dressing Eq. 11)
+  Real z_min = 0;     ///< back camera's near plane = front camera's far plane [m]
+  Real z_max = 0;     ///< front camera's near plane = back camera's far plane [m]
+
+  /// Continuous front-view column of world x [pixels].
+  Real front_u(Real x) const { return (x - x0) / pixel; }
+  /// Continuous row of world y [pixels].
+  Real map_v(Real y) const { return (y - y0) / pixel; }
+  /// Distance between the near and far planes [m] (bboxdepth of dressing Eq. 5).
+  Real depth_range() const { return z_max - z_min; }
+};
+
+/// Cameras for a body's bounding box. The square is the papers' (side = box height, bottom on
+/// the box's floor, centred on the box in x; dressing Eq. 8) or, with options.fit_extent, the
+/// box's larger side plus two pixels each way, centred on the box. The near/far planes are the
+/// box's z faces moved out by options.tol so no surface lies on a clipping plane.
+/// Throws std::invalid_argument when options.map_size < 8 or the box is flat.
+MapFrame make_map_frame(const Box3& box, const ColliderOptions& options);
+
+/// Both views' maps, front then back, each `size x size` pixels, row-major, row 0 at the bottom,
+/// columns in the view's own window order (so the back map is mirrored in x, dressing Eq. 8).
+/// Pixel p of view k (0 front, 1 back) is element k * size^2 + row * size + col.
+struct MapSet {
+  static constexpr int kFront = 0;
+  static constexpr int kBack = 1;
+  /// Mask values.
+  static constexpr std::uint8_t kEmpty = 0;  ///< no body at this pixel
+  static constexpr std::uint8_t kBody = 1;   ///< the body covers the pixel centre
+  static constexpr std::uint8_t kSide = 2;   ///< the extra silhouette layer (dressing 5.4)
+
+  MapFrame frame;            ///< the cameras
+  bool float_maps = true;    ///< float normal/velocity (true) or 8-bit colours (dressing Eq. 6, walking Eq. 9)
+  bool has_velocity = false; ///< velocity maps were rendered (moving bodies only)
+  Real max_speed = 3;        ///< maxv of the 8-bit velocity encoding [m/s] (walking Eq. 9/10)
+  std::vector<float> z;      ///< body surface z [m] (2 x size^2); -inf (front) / +inf (back) where empty
+  std::vector<std::uint8_t> mask;  ///< kEmpty, kBody or kSide (2 x size^2)
+  std::vector<float> normal;       ///< float maps: interpolated normal xyz + 1 (4 x 2 x size^2)
+  std::vector<float> velocity;     ///< float maps with velocity: xyz + 1 [m/s] (4 x 2 x size^2)
+  std::vector<std::uint8_t> normal8;    ///< 8-bit maps: RGBA, RGB = 0.5 n + 0.5 (dressing Eq. 6)
+  std::vector<std::uint8_t> velocity8;  ///< 8-bit maps: RGBA, RGB = 0.5 v / maxv + 0.5 (walking Eq. 9)
+
+  /// Pixels per view.
+  std::size_t view_pixels() const { return static_cast<std::size_t>(frame.size) * frame.size; }
+  /// Element index of (view, col, row).
+  std::size_t index(int view, int col, int row) const {
+    return view * view_pixels() + static_cast<std::size_t>(row) * frame.size + col;
+  }
+  /// Unit normal at element i (dressing Eq. 7 for 8-bit maps); zero where the map is empty.
+  Vec3 normal_at(std::size_t i) const;
+  /// Body velocity at element i [m/s] (walking Eq. 10 for 8-bit maps); zero without velocity maps.
+  Vec3 velocity_at(std::size_t i) const;
+  /// Sizes every array for `frame` and the encoding, clearing z to +-inf and the mask to kEmpty.
+  void reset(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv);
+};
+
+/// Adds the silhouette layer of dressing 5.4: every empty pixel with a body pixel among its 8
+/// neighbours takes the depth, normal and velocity of the neighbour nearest to the camera and
+/// becomes kSide. Applied to both views.
+void add_side_layer(MapSet& maps);
+
+/// Draws both views of a body into a MapSet whose frame and encoding are already set (reset()).
+class MapRenderer {
+ public:
+  MapRenderer() = default;
+  MapRenderer(const MapRenderer&) = delete;
+  MapRenderer& operator=(const MapRenderer&) = delete;
+  virtual ~MapRenderer() = default;
+  /// "gl" or "cpu".
+  virtual std::string_view name() const = 0;
+  /// Renders depth and normal maps (and velocity maps when maps.has_velocity) of `body`, mask
+  /// kBody or kEmpty. Does not add the side layer. Never throws once set up.
+  virtual void render(const BodyFrame& body, MapSet& maps) = 0;
+};
+
+/// OpenGL via OSMesa (llvmpipe): one off-screen context with its own small client buffer,
+/// an FBO with two colour targets (normal, velocity; RGBA32F or RGBA8) and a depth target,
+/// read back with glReadPixels. Throws std::runtime_error when no context can be created or a
+/// shader does not compile.
+std::unique_ptr<MapRenderer> make_gl_map_renderer();
+
+/// The CPU rasteriser: both views in one pass over the triangles, vertices snapped to 1/256
+/// pixel, pixel centres sampled with the top-left fill rule as llvmpipe does, float attributes.
+std::unique_ptr<MapRenderer> make_cpu_map_renderer();
+
+/// One-shot maps of a body: frame from its bounding box and `options` (map_size, fit_extent,
+/// float_maps, max_speed, side_layer), velocity maps when body.moving. `renderer` is "gl" or
+/// "cpu". Throws std::invalid_argument for another name or a malformed body, std::runtime_error
+/// when GL is asked for and no context can be created.
+MapSet render_maps(const BodyFrame& body, std::string_view renderer, const ColliderOptions& options);
+
+}  // namespace clothbench

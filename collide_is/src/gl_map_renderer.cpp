@@ -1,0 +1,260 @@
+// The OpenGL renderer of the image-space maps: OSMesa (llvmpipe), one FBO holding both views.
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <GL/osmesa.h>
+
+#include <array>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "clothbench/collide_is/map_set.hpp"
+
+namespace clothbench {
+namespace {
+
+constexpr const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 velocity;
+uniform mat4 clip_from_world;
+noperspective out vec3 body_normal;
+noperspective out vec3 body_velocity;
+void main() {
+  gl_Position = clip_from_world * vec4(position, 1.0);
+  body_normal = normal;
+  body_velocity = velocity;
+}
+)";
+
+// float targets keep the interpolated vectors; 8-bit targets get dressing Eq. 6 and walking Eq. 9
+// (the printed Eq. 9 reads 0.5 v + 0.5 / maxv; its inverse, Eq. 10, fixes it as 0.5 v / maxv + 0.5)
+constexpr const char* kFragmentShader = R"(#version 330 core
+noperspective in vec3 body_normal;
+noperspective in vec3 body_velocity;
+uniform int encode8;
+uniform float max_speed;
+layout(location = 0) out vec4 normal_out;
+layout(location = 1) out vec4 velocity_out;
+void main() {
+  if (encode8 != 0) {
+    normal_out = vec4(0.5 * body_normal + 0.5, 1.0);
+    velocity_out = vec4(0.5 * body_velocity / max_speed + 0.5, 1.0);
+  } else {
+    normal_out = vec4(body_normal, 1.0);
+    velocity_out = vec4(body_velocity, 1.0);
+  }
+}
+)";
+
+// the client buffer OSMesaMakeCurrent needs even when every draw goes to an FBO [pixels]
+constexpr int kClientSide = 16;
+
+GLuint compile(GLenum type, const char* source) {
+  const GLuint s = glCreateShader(type);
+  glShaderSource(s, 1, &source, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    std::array<char, 2048> log{};
+    glGetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    throw std::runtime_error(std::string("is-gl: shader does not compile: ") + log.data());
+  }
+  return s;
+}
+
+// column-major clip-from-world matrix of one view (walking section 4 cameras)
+std::array<float, 16> clip_from_world(const MapFrame& f, int view) {
+  const float side = f.size * f.pixel;
+  const float sx = 2.0f / side, sz = 2.0f / f.depth_range();
+  std::array<float, 16> m{};
+  if (view == MapSet::kFront) {
+    // x -> [-1, 1] left to right; near (ndc -1) at z_max
+    m[0] = sx, m[12] = -1.0f - sx * f.x0;
+    m[10] = -sz, m[14] = sz * f.z_max - 1.0f;
+  } else {
+    // mirrored x (dressing Eq. 8, X_back); near at z_min
+    m[0] = -sx, m[12] = 1.0f + sx * f.x0;
+    m[10] = sz, m[14] = -sz * f.z_min - 1.0f;
+  }
+  m[5] = sx, m[13] = -1.0f - sx * f.y0;
+  m[15] = 1.0f;
+  return m;
+}
+
+class GlMapRenderer final : public MapRenderer {
+ public:
+  GlMapRenderer() : client_(4 * kClientSide * kClientSide) {
+    // context (core profile 3.3) made current on its own small client buffer
+    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    ctx_ = OSMesaCreateContextAttribs(attributes, nullptr);
+    if (!ctx_) throw std::runtime_error("is-gl: no OpenGL context: OSMesaCreateContextAttribs (core 3.3) failed");
+    make_current();
+    // shaders and their uniforms
+    const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
+    const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+    program_ = glCreateProgram();
+    glAttachShader(program_, vs);
+    glAttachShader(program_, fs);
+    glLinkProgram(program_);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (!ok) throw std::runtime_error("is-gl: shader program does not link");
+    u_clip_ = glGetUniformLocation(program_, "clip_from_world");
+    u_encode8_ = glGetUniformLocation(program_, "encode8");
+    u_max_speed_ = glGetUniformLocation(program_, "max_speed");
+    // vertex arrays: positions, normals, velocities, indices
+    glGenVertexArrays(1, &vao_);
+    glBindVertexArray(vao_);
+    glGenBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, vbo_[3]);
+    if (glGetError() != GL_NO_ERROR) throw std::runtime_error("is-gl: OpenGL set-up failed");
+  }
+
+  ~GlMapRenderer() override {
+    make_current();
+    release_targets();
+    glDeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
+    glDeleteVertexArrays(1, &vao_);
+    glDeleteProgram(program_);
+    OSMesaDestroyContext(ctx_);
+  }
+
+  std::string_view name() const override { return "gl"; }
+
+  void render(const BodyFrame& body, MapSet& maps) override {
+    make_current();
+    targets(maps);
+    upload(body, maps.has_velocity);
+    draw(body, maps);
+    read_back(maps);
+  }
+
+ private:
+  void make_current() {
+    OSMesaMakeCurrent(ctx_, client_.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide);
+  }
+
+  // (re)creates the FBO when size or encoding changed: size x 2 size, front below back
+  void targets(const MapSet& maps) {
+    const bool same = fbo_ && size_ == maps.frame.size && float_ == maps.float_maps;
+    if (same) return;
+    release_targets();
+    size_ = maps.frame.size;
+    float_ = maps.float_maps;
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glGenRenderbuffers(static_cast<GLsizei>(rbo_.size()), rbo_.data());
+    const GLenum colour = float_ ? GL_RGBA32F : GL_RGBA8;
+    const GLenum depth = float_ ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24;
+    const std::array<GLenum, 3> formats = {colour, colour, depth};
+    const std::array<GLenum, 3> points = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_DEPTH_ATTACHMENT};
+    for (std::size_t k = 0; k < rbo_.size(); ++k) {
+      glBindRenderbuffer(GL_RENDERBUFFER, rbo_[k]);
+      glRenderbufferStorage(GL_RENDERBUFFER, formats[k], size_, 2 * size_);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, points[k], GL_RENDERBUFFER, rbo_[k]);
+    }
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("is-gl: framebuffer of " + std::to_string(size_) + "^2 maps is incomplete");
+  }
+
+  void release_targets() {
+    if (!fbo_) return;
+    glDeleteFramebuffers(1, &fbo_);
+    glDeleteRenderbuffers(static_cast<GLsizei>(rbo_.size()), rbo_.data());
+    fbo_ = 0;
+  }
+
+  // vertex attributes straight from the frame's packed 3 x n float arrays
+  void upload(const BodyFrame& body, bool velocity) {
+    const auto bytes = [](const auto& m) { return static_cast<GLsizeiptr>(m.size() * sizeof(float)); };
+    const std::array<const Points3*, 3> arrays = {&body.positions, &body.normals, &body.velocities};
+    for (GLuint k = 0; k < 3; ++k) {
+      if (k == 2 && !velocity) {
+        glDisableVertexAttribArray(2);
+        glVertexAttrib3f(2, 0.0f, 0.0f, 0.0f);
+        continue;
+      }
+      glBindBuffer(GL_ARRAY_BUFFER, vbo_[k]);
+      glBufferData(GL_ARRAY_BUFFER, bytes(*arrays[k]), arrays[k]->data(), GL_STREAM_DRAW);
+      glVertexAttribPointer(k, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+      glEnableVertexAttribArray(k);
+    }
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(body.triangles.size() * sizeof(std::int32_t)),
+                 body.triangles.data(), GL_STREAM_DRAW);
+  }
+
+  // both views, depth test keeping the surface nearest each camera
+  void draw(const BodyFrame& body, const MapSet& maps) {
+    const std::array<GLenum, 2> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(maps.has_velocity ? 2 : 1, buffers.data());
+    glClearColor(0, 0, 0, 0);
+    glClearDepth(1.0);
+    glDisable(GL_SCISSOR_TEST);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program_);
+    glUniform1i(u_encode8_, maps.float_maps ? 0 : 1);
+    glUniform1f(u_max_speed_, maps.max_speed);
+    glEnable(GL_SCISSOR_TEST);
+    for (int view = 0; view < 2; ++view) {
+      glViewport(0, view * size_, size_, size_);
+      glScissor(0, view * size_, size_, size_);
+      const std::array<float, 16> m = clip_from_world(maps.frame, view);
+      glUniformMatrix4fv(u_clip_, 1, GL_FALSE, m.data());
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(body.triangles.size()), GL_UNSIGNED_INT, nullptr);
+    }
+  }
+
+  // depth and colour targets straight into the MapSet; z-buffer to geometry space (dressing Eq. 5)
+  void read_back(MapSet& maps) {
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, size_, 2 * size_, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data());
+    const GLenum type = maps.float_maps ? GL_FLOAT : GL_UNSIGNED_BYTE;
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, size_, 2 * size_, GL_RGBA, type,
+                 maps.float_maps ? static_cast<void*>(maps.normal.data()) : maps.normal8.data());
+    if (maps.has_velocity) {
+      glReadBuffer(GL_COLOR_ATTACHMENT1);
+      glReadPixels(0, 0, size_, 2 * size_, GL_RGBA, type,
+                   maps.float_maps ? static_cast<void*>(maps.velocity.data()) : maps.velocity8.data());
+    }
+    const MapFrame& f = maps.frame;
+    const std::size_t n = maps.view_pixels();
+    const float inf = std::numeric_limits<float>::infinity();
+    for (std::size_t i = 0; i < 2 * n; ++i) {
+      const float zbuf = maps.z[i];
+      const bool front = i < n;
+      if (zbuf >= 1.0f) {
+        maps.z[i] = front ? -inf : inf;
+        maps.mask[i] = MapSet::kEmpty;
+        continue;
+      }
+      maps.z[i] = front ? f.z_max - zbuf * f.depth_range() : f.z_min + zbuf * f.depth_range();
+      maps.mask[i] = MapSet::kBody;
+    }
+  }
+
+  OSMesaContext ctx_ = nullptr;
+  std::vector<unsigned char> client_;  // RGBA client buffer (kClientSide^2)
+  GLuint program_ = 0, vao_ = 0, fbo_ = 0;
+  std::array<GLuint, 4> vbo_{};  // positions, normals, velocities, indices
+  std::array<GLuint, 3> rbo_{};  // normal, velocity, depth
+  GLint u_clip_ = -1, u_encode8_ = -1, u_max_speed_ = -1;
+  int size_ = 0;
+  bool float_ = true;
+};
+
+}  // namespace
+
+std::unique_ptr<MapRenderer> make_gl_map_renderer() { return std::make_unique<GlMapRenderer>(); }
+
+}  // namespace clothbench
