@@ -11,8 +11,8 @@
 namespace clothbench {
 
 ImageSpaceCollider::ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, const ColliderOptions& options,
-                                       double setup_ms)
-    : renderer_(std::move(renderer)), options_(options) {
+                                       double setup_ms, DepthTest test)
+    : renderer_(std::move(renderer)), options_(options), test_(test) {
   if (!renderer_) throw std::invalid_argument("ImageSpaceCollider: no renderer");
   if (!(options.max_speed > 0)) throw std::invalid_argument("ImageSpaceCollider: max_speed must be > 0");
   stats_.setup_ms = setup_ms;
@@ -46,42 +46,95 @@ void ImageSpaceCollider::update_body(const BodyFrame& body) {
   ++stats_.updates;
 }
 
-void ImageSpaceCollider::query(PointsView points, ContactsOut out) {
-  Stopwatch watch;
+namespace {
+
+// element of `view` at front-map column col (the back map is mirrored, dressing Eq. 8)
+inline std::size_t element(const MapSet& m, int view, int col, int row) {
+  const int n = m.frame.size;
+  return m.index(view, view == MapSet::kFront ? col : n - 1 - col, row);
+}
+
+// normal and velocity blended bilinearly over the four pixel centres around world (x, y);
+// false (outputs untouched) unless all four are body pixels of `view`
+bool blend(const MapSet& m, int view, Real x, Real y, Vec3& normal, Vec3& velocity) {
+  const Real u = m.frame.front_u(x) - 0.5f, v = m.frame.map_v(y) - 0.5f;
+  if (!(u >= 0 && v >= 0 && u < m.frame.size - 1 && v < m.frame.size - 1)) return false;
+  const int col = static_cast<int>(u), row = static_cast<int>(v);
+  const Real a = u - col, b = v - row;
+  Vec3 n = Vec3::Zero(), vel = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) {
+    const std::size_t j = element(m, view, col + (k & 1), row + (k >> 1));
+    if (m.mask[j] != MapSet::kBody) return false;
+    const Real w = ((k & 1) ? a : 1 - a) * ((k >> 1) ? b : 1 - b);
+    n += w * m.normal_at(j);
+    vel += w * m.velocity_at(j);
+  }
+  if (!(n.norm() > 0)) return false;
+  normal = n.normalized();
+  velocity = vel;
+  return true;
+}
+
+}  // namespace
+
+bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
   const MapFrame& f = maps_.frame;
   const Real tol = options_.tol;
-  const int n = f.size;
-  const std::size_t back = maps_.view_pixels();
+  c.depth = std::numeric_limits<float>::infinity();
+  // world -> map (dressing Eq. 8 / walking Eq. 11): front column u, back column size - 1 - u
+  const Real u = f.front_u(p.x()), v = f.map_v(p.y());
+  if (!(u >= 0 && v >= 0 && u < f.size && v < f.size)) return false;
+  const int col = static_cast<int>(u), row = static_cast<int>(v);
+  const std::size_t fi = element(maps_, MapSet::kFront, col, row), bi = element(maps_, MapSet::kBack, col, row);
+  // between the front and back surfaces within tol (dressing Eq. 5/9, walking Eq. 12)
+  const Real d_front = p.z() - maps_.z[fi], d_back = maps_.z[bi] - p.z();
+  const Real depth_z = std::max(d_front, d_back);
+  const bool plane = test_ == DepthTest::kTangentPlane;
+  if (!(depth_z < (plane ? tol + f.pixel : tol))) {
+    c.depth = std::max(depth_z, tol);
+    return false;
+  }
+  // the nearer surface's map answers (z beyond the local body centre: the front map)
+  const int view = d_front >= d_back ? MapSet::kFront : MapSet::kBack;
+  const std::size_t i = view == MapSet::kFront ? fi : bi;
+  c.depth = depth_z;
+  c.normal = maps_.normal_at(i);
+  c.body_velocity = maps_.velocity_at(i);
+  if (plane) {
+    // signed distance to the tangent plane at the pixel centre's surface point; points between
+    // the surfaces stay inside (the plane distance never exceeds the distance along z)
+    const Vec3 s(f.x0 + (col + 0.5f) * f.pixel, f.y0 + (row + 0.5f) * f.pixel, maps_.z[i]);
+    const Real d = (p - s).dot(c.normal);
+    c.depth = depth_z < 0 ? std::clamp(d, depth_z, 0.0f) : d;
+    if (!(c.depth < tol)) {
+      c = Contact{};
+      c.depth = std::max(d, tol);
+      return false;
+    }
+    // normal and velocity at the foot of the perpendicular, blended over four pixel centres
+    const Vec3 foot = p - d * c.normal;
+    blend(maps_, view, foot.x(), foot.y(), c.normal, c.body_velocity);
+  }
+  // side-layer pixels stand for the tolerance band outside the silhouette (dressing 5.4)
+  if (maps_.mask[i] == MapSet::kSide) c.depth = std::max(c.depth, 0.0f);
+  c.hit = true;
+  return true;
+}
+
+void ImageSpaceCollider::query(PointsView points, ContactsOut out) {
+  Stopwatch watch;
   std::int64_t hits = 0, degenerate = 0;
-  for (std::size_t p = 0; p < points.count; ++p) {
-    Contact& c = out[p];
+  for (std::size_t k = 0; k < points.count; ++k) {
+    Contact& c = out[k];
     c = Contact{};
-    const Real x = points.xyz[3 * p], y = points.xyz[3 * p + 1], z = points.xyz[3 * p + 2];
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
+    const Vec3 p = points[k];
+    // NaN or infinite points cannot be answered
+    if (!p.allFinite()) {
       ++degenerate;
       c.depth = std::numeric_limits<float>::infinity();
       continue;
     }
-    // world -> map (dressing Eq. 8): front column u, back column size - 1 - u
-    const Real u = f.front_u(x), v = f.map_v(y);
-    if (!(u >= 0 && v >= 0 && u < n && v < n)) {
-      c.depth = std::numeric_limits<float>::infinity();
-      continue;
-    }
-    const int col = static_cast<int>(u), row = static_cast<int>(v);
-    const std::size_t fi = static_cast<std::size_t>(row) * n + col;
-    const std::size_t bi = back + static_cast<std::size_t>(row) * n + (n - 1 - col);
-    // between the front and back surfaces within tol (dressing Eq. 5/9, walking Eq. 12)
-    const Real d_front = z - maps_.z[fi], d_back = maps_.z[bi] - z;
-    c.depth = std::max(d_front, d_back);
-    if (!(c.depth < tol)) continue;
-    // the nearer surface's map answers normal and velocity
-    const std::size_t i = d_front >= d_back ? fi : bi;
-    if (maps_.mask[i] == MapSet::kSide) c.depth = std::max(c.depth, 0.0f);
-    c.hit = true;
-    c.normal = maps_.normal_at(i);
-    c.body_velocity = maps_.velocity_at(i);
-    ++hits;
+    hits += answer(p, c);
   }
   stats_.query_ms += watch.ms();
   ++stats_.queries;

@@ -8,15 +8,27 @@
 
 namespace clothbench {
 
+/// How a query point's depth is measured against the maps.
+enum class DepthTest {
+  /// The papers' comparison along z only (dressing Eq. 9, walking Eq. 12):
+  ///   depth = max(z - zf, zb - z), zf / zb = front / back surface z at the point's pixel.
+  kPapers,
+  /// The same comparison, refined for points within tol + one pixel of the nearer surface by
+  /// the normal map: depth = (p - s) . n, s the surface point at the pixel centre, n its normal
+  /// (signed distance to the surface's tangent plane instead of the distance along z); normal
+  /// and velocity then blended bilinearly at the foot of the perpendicular p - depth n.
+  kTangentPlane,
+};
+
 /// Image-space collider with maps drawn by OpenGL through OSMesa; name() "is-gl".
 /// Static bodies are rendered once in set_body, moving ones again in every update_body
 /// (velocity maps only when body.moving). Query per point (dressing Eq. 8/9, walking Eq. 11/12):
 ///   (col, row) from world (x, y); zf, zb = front and back surface z at that pixel;
-///   depth = max(z - zf, zb - z) (< 0 between the surfaces); hit when depth < tol;
+///   hit when the point lies between the two surfaces within tol (depth < tol, DepthTest);
 ///   normal and velocity from the map whose surface is nearer (z beyond the local body centre
 ///   (zf + zb) / 2 takes the front map, the papers' choice by the sign of z).
-/// Side-layer hits (dressing 5.4) report depth >= 0. Throws std::runtime_error when no GL
-/// context can be created.
+/// Side-layer hits (dressing 5.4) report depth >= 0. Depth test kTangentPlane. Throws
+/// std::runtime_error when no GL context can be created.
 std::unique_ptr<Collider> make_is_gl_collider(const ColliderOptions& options);
 
 /// The same collider with maps from the CPU rasteriser; name() "is-cpu".
@@ -26,7 +38,9 @@ std::unique_ptr<Collider> make_is_cpu_collider(const ColliderOptions& options);
 /// pictures and tests through maps().
 class ImageSpaceCollider final : public Collider {
  public:
-  ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, const ColliderOptions& options, double setup_ms);
+  /// `setup_ms`: set-up already spent on the renderer (GL context, shaders) [ms].
+  ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, const ColliderOptions& options, double setup_ms,
+                     DepthTest test = DepthTest::kTangentPlane);
   std::string_view name() const override;
   void set_body(const BodyFrame& body) override;
   void update_body(const BodyFrame& body) override;
@@ -37,9 +51,12 @@ class ImageSpaceCollider final : public Collider {
 
  private:
   void render(const BodyFrame& body);
+  // one point's contact; true on a hit
+  bool answer(const Vec3& p, Contact& c) const;
 
   std::unique_ptr<MapRenderer> renderer_;
   ColliderOptions options_;
+  DepthTest test_;
   MapSet maps_;
   int vertex_count_ = 0;
   CollideStats stats_;

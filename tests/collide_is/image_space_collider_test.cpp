@@ -1,0 +1,373 @@
+#include "clothbench/collide_is/image_space_collider.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "clothbench/sim/mesh_query.hpp"
+#include "is_test_bodies.hpp"
+#include "test_support.hpp"
+
+namespace clothbench {
+namespace {
+
+// the points of the accuracy tests: near the surface, with the exact answer for each
+struct Sample {
+  Points3 points;                 // query points [m] (3 x n)
+  std::vector<Contact> exact;     // closest point + pseudo-normal sign (brute force)
+  std::vector<Real> normal_z;     // z of the exact closest feature's unit pseudo-normal
+};
+
+// `count` points offset from area-uniform surface points along the face normal by U(-band, band)
+Sample near_surface_sample(const BodyFrame& body, int count, Real band, Real tol, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::vector<double> areas(body.triangle_count());
+  for (int t = 0; t < body.triangle_count(); ++t) {
+    const Vec3 a = body.positions.col(body.triangles(0, t)), b = body.positions.col(body.triangles(1, t)),
+               c = body.positions.col(body.triangles(2, t));
+    areas[t] = 0.5 * (b - a).cross(c - a).norm();
+  }
+  std::discrete_distribution<int> pick(areas.begin(), areas.end());
+  std::uniform_real_distribution<Real> unit(0, 1), offset(-band, band);
+  Sample s;
+  s.points.resize(3, count);
+  for (int i = 0; i < count; ++i) {
+    const int t = pick(rng);
+    const Vec3 a = body.positions.col(body.triangles(0, t)), b = body.positions.col(body.triangles(1, t)),
+               c = body.positions.col(body.triangles(2, t));
+    const Real r1 = std::sqrt(unit(rng)), r2 = unit(rng);
+    const Vec3 on = (1 - r1) * a + r1 * (1 - r2) * b + r1 * r2 * c;
+    s.points.col(i) = on + offset(rng) * (b - a).cross(c - a).normalized();
+  }
+  // exact answers
+  const PseudoNormals pseudo(body);
+  for (int i = 0; i < count; ++i) {
+    const Vec3 p = s.points.col(i);
+    const ClosestPoint cp = closest_point_brute(body, p);
+    s.exact.push_back(contact_from_closest(body, pseudo, p, cp, tol));
+    s.normal_z.push_back(pseudo.at(cp).normalized().z());
+  }
+  return s;
+}
+
+// how many body layers a line along z crosses at each front-map pixel centre (> 2: some surface
+// is hidden from both cameras)
+std::vector<int> depth_complexity(const BodyFrame& body, const MapFrame& f) {
+  std::vector<int> count(static_cast<std::size_t>(f.size) * f.size, 0);
+  for (int t = 0; t < body.triangle_count(); ++t) {
+    double u[3], v[3];
+    for (int k = 0; k < 3; ++k) {
+      u[k] = f.front_u(body.positions(0, body.triangles(k, t)));
+      v[k] = f.map_v(body.positions(1, body.triangles(k, t)));
+    }
+    const double area = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
+    if (area == 0) continue;
+    const int c0 = std::max(0, static_cast<int>(std::floor(std::min({u[0], u[1], u[2]}))));
+    const int c1 = std::min(f.size - 1, static_cast<int>(std::ceil(std::max({u[0], u[1], u[2]}))));
+    const int r0 = std::max(0, static_cast<int>(std::floor(std::min({v[0], v[1], v[2]}))));
+    const int r1 = std::min(f.size - 1, static_cast<int>(std::ceil(std::max({v[0], v[1], v[2]}))));
+    for (int r = r0; r <= r1; ++r) {
+      for (int c = c0; c <= c1; ++c) {
+        const double x = c + 0.5, y = r + 0.5;
+        bool inside = true;
+        for (int k = 0; k < 3; ++k) {
+          const int a = k, b = (k + 1) % 3;
+          const double e = ((u[b] - u[a]) * (y - v[a]) - (v[b] - v[a]) * (x - u[a])) * (area > 0 ? 1 : -1);
+          inside = inside && e >= 0;
+        }
+        count[static_cast<std::size_t>(r) * f.size + c] += inside;
+      }
+    }
+  }
+  return count;
+}
+
+// where the maps cannot be right: near the silhouette or where the body hides a surface
+struct Silhouette {
+  MapSet maps;
+  std::vector<int> layers;  // depth complexity per front pixel
+  // the point's front-map pixel is within 2 pixels of a coverage change (no side layer)
+  bool near(const Vec3& p) const {
+    const MapFrame& f = maps.frame;
+    const int col = static_cast<int>(std::floor(f.front_u(p.x()))), row = static_cast<int>(std::floor(f.map_v(p.y())));
+    int covered = 0, cells = 0;
+    for (int dr = -2; dr <= 2; ++dr) {
+      for (int dc = -2; dc <= 2; ++dc) {
+        const int c = col + dc, r = row + dr;
+        const bool in = c >= 0 && r >= 0 && c < f.size && r < f.size;
+        covered += in && maps.mask[maps.index(MapSet::kFront, c, r)] == MapSet::kBody;
+        ++cells;
+      }
+    }
+    return covered != 0 && covered != cells;
+  }
+  // a line along z within a pixel of the point crosses more than two body layers
+  bool hidden(const Vec3& p) const {
+    const MapFrame& f = maps.frame;
+    const int col = static_cast<int>(std::floor(f.front_u(p.x()))), row = static_cast<int>(std::floor(f.map_v(p.y())));
+    int most = 0;
+    for (int r = std::max(0, row - 1); r <= std::min(f.size - 1, row + 1); ++r)
+      for (int c = std::max(0, col - 1); c <= std::min(f.size - 1, col + 1); ++c)
+        most = std::max(most, layers[static_cast<std::size_t>(r) * f.size + c]);
+    return most > 2;
+  }
+};
+
+Silhouette silhouette_of(const BodyFrame& body, ColliderOptions options) {
+  options.side_layer = false;
+  MapSet maps = render_maps(body, "cpu", options);
+  std::vector<int> layers = depth_complexity(body, maps.frame);
+  return {std::move(maps), std::move(layers)};
+}
+
+// agreement of a collider with the exact answers, by region
+struct Region {
+  long points = 0, false_hits = 0, misses = 0;
+};
+struct Report {
+  Region away[3], near[3], hidden[3];  // front (n_z >= 0.5), back (n_z <= -0.5), sides
+  std::vector<double> normal_deg;    // exact contacts within tol of the surface, away
+  std::vector<double> normal_deg_deep;  // exact contacts deeper than tol, away
+  std::vector<Contact> contacts;
+  long away_points() const { return away[0].points + away[1].points + away[2].points; }
+  long away_disagree() const {
+    long n = 0;
+    for (const auto& r : away) n += r.false_hits + r.misses;
+    return n;
+  }
+  long side_misses() const { return away[2].misses + near[2].misses + hidden[2].misses; }
+};
+
+int region_of(Real nz) { return nz >= 0.5f ? 0 : (nz <= -0.5f ? 1 : 2); }
+
+Report evaluate(Collider& collider, const BodyFrame& body, const Sample& s, const Silhouette& sil, Real tol) {
+  collider.set_body(body);
+  Report r;
+  r.contacts.resize(s.exact.size());
+  collider.query(PointsView(s.points), ContactsOut{r.contacts.data(), r.contacts.size()});
+  for (std::size_t i = 0; i < s.exact.size(); ++i) {
+    const bool near = sil.near(s.points.col(i)), hidden = !near && sil.hidden(s.points.col(i));
+    Region& g = (near ? r.near : (hidden ? r.hidden : r.away))[region_of(s.normal_z[i])];
+    ++g.points;
+    const Contact &got = r.contacts[i], &want = s.exact[i];
+    g.false_hits += got.hit && !want.hit;
+    g.misses += !got.hit && want.hit;
+    if (near || hidden || !got.hit || !want.hit) continue;
+    const double deg = test::angle_deg(got.normal, want.normal);
+    (want.depth > -tol ? r.normal_deg : r.normal_deg_deep).push_back(deg);
+  }
+  // the table the issue asks for
+  const char* names[3] = {"front", "back", "sides"};
+  const auto cells = [](const Region& g) {
+    return std::to_string(g.points) + " " + std::to_string(g.false_hits) + " " + std::to_string(g.misses);
+  };
+  std::cout << "[ " << collider.name() << " ] region: points false-hits misses, away | near silhouette | hidden layer\n";
+  for (int k = 0; k < 3; ++k)
+    std::cout << "[ " << collider.name() << " ] " << std::setw(6) << names[k] << ": " << cells(r.away[k]) << " | "
+              << cells(r.near[k]) << " | " << cells(r.hidden[k]) << "\n";
+  return r;
+}
+
+// the q-quantile of a sample (0 when empty)
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(q * (v.size() - 1))];
+}
+
+double fraction_below(const std::vector<double>& v, double limit) {
+  return v.empty() ? 0.0 : static_cast<double>(std::count_if(v.begin(), v.end(), [&](double x) { return x <= limit; })) / v.size();
+}
+
+// 10,000 points within 3 cm of the test body, fixed seed, exact answers by brute force
+class ImageSpaceAccuracy : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    body_ = &test::test_body_model().rest();
+    sample_ = new Sample(near_surface_sample(*body_, 10000, 0.03f, ColliderOptions{}.tol, 20011));
+    silhouette_ = new Silhouette(silhouette_of(*body_, ColliderOptions{}));
+  }
+  static void TearDownTestSuite() {
+    delete sample_;
+    delete silhouette_;
+  }
+  static Report expect_accurate(Collider& c, const char* what, double min_agree = 0.99, double min_within5 = 0.95) {
+    const Report r = evaluate(c, *body_, *sample_, *silhouette_, tol_);
+    const double agree = 1.0 - static_cast<double>(r.away_disagree()) / r.away_points();
+    const double within5 = fraction_below(r.normal_deg, 5.0);
+    std::cout << "[ " << c.name() << " ] " << what << ": hit/no-hit agree on " << 100 * agree << " % of "
+              << r.away_points() << " points away from the silhouette and hidden layers; normals within 5 deg on "
+              << 100 * within5 << " % of " << r.normal_deg.size() << " exact contacts within tol of the surface ("
+              << 100 * fraction_below(r.normal_deg_deep, 5.0) << " % of " << r.normal_deg_deep.size()
+              << " deeper ones); angle median " << quantile(r.normal_deg, 0.5) << " deg, 95% "
+              << quantile(r.normal_deg, 0.95) << " deg\n";
+    EXPECT_GE(agree, min_agree);
+    EXPECT_GE(within5, min_within5);
+    return r;
+  }
+  static constexpr Real tol_ = ColliderOptions{}.tol;
+  static const BodyFrame* body_;
+  static Sample* sample_;
+  static Silhouette* silhouette_;
+};
+const BodyFrame* ImageSpaceAccuracy::body_ = nullptr;
+Sample* ImageSpaceAccuracy::sample_ = nullptr;
+Silhouette* ImageSpaceAccuracy::silhouette_ = nullptr;
+
+TEST_F(ImageSpaceAccuracy, CpuMapsAgreeWithExactGeometry) {
+  auto c = make_is_cpu_collider(ColliderOptions{});
+  expect_accurate(*c, "float maps");
+}
+
+TEST_F(ImageSpaceAccuracy, EightBitMapsAgreeWithExactGeometry) {
+  ColliderOptions o;
+  o.float_maps = false;
+  auto c = make_is_cpu_collider(o);
+  expect_accurate(*c, "8-bit maps");
+}
+
+TEST_F(ImageSpaceAccuracy, GlMapsAgreeWithExactGeometryAndWithCpu) {
+  CLOTHBENCH_REQUIRE_GL();
+  auto gl = make_is_gl_collider(ColliderOptions{});
+  const Report a = expect_accurate(*gl, "float maps");
+  // same maps, same answers
+  auto cpu = make_is_cpu_collider(ColliderOptions{});
+  const Report b = evaluate(*cpu, *body_, *sample_, *silhouette_, tol_);
+  long differ = 0;
+  for (std::size_t i = 0; i < a.contacts.size(); ++i) differ += a.contacts[i].hit != b.contacts[i].hit;
+  std::cout << "[ is-gl ] hit differs from is-cpu on " << differ << " of " << a.contacts.size() << " points\n";
+  EXPECT_LE(differ, 2);
+  const CollideStats st = gl->stats();
+  EXPECT_GT(st.setup_ms, 0);
+  EXPECT_EQ(st.points, static_cast<std::int64_t>(a.contacts.size()));
+}
+
+TEST_F(ImageSpaceAccuracy, PapersDepthTestAlongZAgreesLessOften) {
+  // the papers' comparison along z alone misses points within tol of sloped surfaces
+  ImageSpaceCollider papers(make_cpu_map_renderer(), ColliderOptions{}, 0.0, DepthTest::kPapers);
+  const Report a = expect_accurate(papers, "papers' z test", 0.97, 0.0);
+  auto plane = make_is_cpu_collider(ColliderOptions{});
+  const Report b = evaluate(*plane, *body_, *sample_, *silhouette_, tol_);
+  EXPECT_LT(b.away_disagree(), a.away_disagree());
+  EXPECT_GT(fraction_below(b.normal_deg, 5.0), fraction_below(a.normal_deg, 5.0));
+}
+
+TEST_F(ImageSpaceAccuracy, SideLayerReducesSideMisses) {
+  ColliderOptions off;
+  off.side_layer = false;
+  auto with = make_is_cpu_collider(ColliderOptions{});
+  auto without = make_is_cpu_collider(off);
+  const Report a = evaluate(*with, *body_, *sample_, *silhouette_, tol_);
+  const Report b = evaluate(*without, *body_, *sample_, *silhouette_, tol_);
+  std::cout << "[ side layer ] misses at the sides: " << a.side_misses() << " with, " << b.side_misses()
+            << " without (dressing 5.4)\n";
+  EXPECT_LT(a.side_misses(), b.side_misses());
+}
+
+TEST(ImageSpaceCollider, WalkingFrameVelocityMatchesTheSkinnedMotion) {
+  const std::string walk = test::walking_body_path();
+  if (walk.empty()) GTEST_SKIP() << "no walking body in the data root (" << data_root() << ")";
+  const BodyModel& model = test::test_body_model();
+  const BodyFrame body = model.frame(model.animation_index("walk_07_01"), 2.0);
+  ASSERT_TRUE(body.moving);
+  // 4,000 points (brute force on 26,756 triangles is the slow part)
+  const Sample s = near_surface_sample(body, 4000, 0.03f, ColliderOptions{}.tol, 777);
+  const Silhouette sil = silhouette_of(body, ColliderOptions{});
+  auto c = make_is_cpu_collider(ColliderOptions{});
+  const Report r = evaluate(*c, body, s, sil, ColliderOptions{}.tol);
+  // errors relative to the fastest body point and to each point's own speed, over exact contacts
+  // within tol of the surface away from the silhouette and hidden layers
+  double vmax = 0;
+  for (const Contact& e : s.exact) vmax = std::max(vmax, static_cast<double>(e.body_velocity.norm()));
+  std::vector<double> of_max, of_own;
+  for (std::size_t i = 0; i < s.exact.size(); ++i) {
+    const Contact &e = s.exact[i], &g = r.contacts[i];
+    if (!e.hit || !g.hit || e.depth <= -ColliderOptions{}.tol || sil.near(s.points.col(i)) || sil.hidden(s.points.col(i)))
+      continue;
+    const double err = (g.body_velocity - e.body_velocity).norm();
+    of_max.push_back(err / vmax);
+    of_own.push_back(err / e.body_velocity.norm());
+  }
+  ASSERT_GT(of_max.size(), 100u);
+  std::cout << "[ velocity ] walk_07_01 t=2 s, fastest surface point " << vmax << " m/s, " << of_max.size()
+            << " contacts: |v_map - v_exact| / vmax median " << 100 * quantile(of_max, 0.5) << " %, 95% "
+            << 100 * quantile(of_max, 0.95) << " %; / |v_exact| median " << 100 * quantile(of_own, 0.5) << " %, 95% "
+            << 100 * quantile(of_own, 0.95) << " %\n";
+  EXPECT_LT(quantile(of_max, 0.95), 0.02);
+  EXPECT_LT(quantile(of_own, 0.5), 0.02);
+}
+
+TEST(ImageSpaceCollider, SphereContactsAlongTheAxes) {
+  auto c = make_is_cpu_collider(ColliderOptions{});
+  const Real r = 0.3f;
+  c->set_body(make_sphere_body(Vec3(0, 0.5f, 0), r, 64, 128));
+  Points3 p(3, 4);
+  p.col(0) = Vec3(0.0f, 0.5f, r - 0.01f);   // inside, 1 cm under the front pole
+  p.col(1) = Vec3(0.0f, 0.5f, -r - 0.003f);  // outside the back pole, within tol
+  p.col(2) = Vec3(0.0f, 0.5f, r + 0.02f);   // outside, beyond tol
+  p.col(3) = Vec3(0.0f, 0.5f, 0.0f);        // centre: 30 cm deep
+  std::vector<Contact> out(4);
+  c->query(PointsView(p), ContactsOut{out.data(), out.size()});
+  ASSERT_TRUE(out[0].hit);
+  EXPECT_NEAR(out[0].depth, -0.01f, 1e-4);
+  EXPECT_LT(test::angle_deg(out[0].normal, Vec3::UnitZ()), 1.0);
+  ASSERT_TRUE(out[1].hit);
+  EXPECT_NEAR(out[1].depth, 0.003f, 1e-4);
+  EXPECT_LT(test::angle_deg(out[1].normal, -Vec3::UnitZ()), 1.0);
+  EXPECT_FALSE(out[2].hit);
+  EXPECT_GE(out[2].depth, ColliderOptions{}.tol);
+  ASSERT_TRUE(out[3].hit);
+  EXPECT_NEAR(out[3].depth, -r, 1e-3);
+  EXPECT_EQ(out[0].body_velocity, Vec3::Zero());
+}
+
+TEST(ImageSpaceCollider, NanPointsAreDegenerateMisses) {
+  auto c = make_is_cpu_collider(ColliderOptions{});
+  c->set_body(make_sphere_body(Vec3(0, 0.5f, 0), 0.3f));
+  Points3 p(3, 2);
+  p.col(0) = Vec3(std::nanf(""), 0.5f, 0.0f);
+  p.col(1) = Vec3(0.0f, 0.5f, 0.0f);
+  std::vector<Contact> out(2);
+  c->query(PointsView(p), ContactsOut{out.data(), out.size()});
+  EXPECT_FALSE(out[0].hit);
+  EXPECT_TRUE(out[1].hit);
+  EXPECT_EQ(c->stats().degenerate, 1);
+  EXPECT_EQ(c->stats().hits, 1);
+}
+
+TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocities) {
+  auto c = make_is_cpu_collider(ColliderOptions{});
+  BodyFrame s = make_sphere_body(Vec3(0, 0.5f, 0), 0.3f);
+  c->set_body(s);
+  // the sphere moves 5 cm along +x at 1 m/s
+  s.moving = true;
+  for (int v = 0; v < s.vertex_count(); ++v) {
+    s.positions(0, v) += 0.05f;
+    s.velocities.col(v) = Vec3(1.0f, 0.0f, 0.0f);
+  }
+  c->update_body(s);
+  Points3 p(3, 1);
+  p.col(0) = Vec3(0.33f, 0.5f, 0.0f);  // outside the old sphere, inside the moved one
+  std::vector<Contact> out(1);
+  c->query(PointsView(p), ContactsOut{out.data(), out.size()});
+  ASSERT_TRUE(out[0].hit);
+  EXPECT_TRUE(test::near_vec(out[0].body_velocity, Vec3(1, 0, 0), 1e-5));
+  EXPECT_EQ(c->stats().updates, 1);
+  BodyFrame other = make_sphere_body(Vec3::Zero(), 0.3f, 8, 8);
+  EXPECT_THROW(c->update_body(other), std::invalid_argument);
+}
+
+TEST(ImageSpaceCollider, GlFactoryNamesItself) {
+  CLOTHBENCH_REQUIRE_GL();
+  EXPECT_EQ(make_is_gl_collider(ColliderOptions{})->name(), "is-gl");
+  EXPECT_EQ(make_is_cpu_collider(ColliderOptions{})->name(), "is-cpu");
+}
+
+}  // namespace
+}  // namespace clothbench
