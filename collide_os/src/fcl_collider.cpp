@@ -1,0 +1,122 @@
+#include "clothbench/collide_os/fcl_collider.hpp"
+
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <limits>
+#include <vector>
+
+#include "clothbench/sim/timer.hpp"
+#include "object_space.hpp"
+
+namespace clothbench {
+
+namespace {
+
+using Mesh = fcl::BVHModel<fcl::OBBRSSd>;
+
+fcl::Vector3d to_double(const Points3& positions, Eigen::Index i) { return positions.col(i).cast<double>(); }
+
+}  // namespace
+
+struct FclCollider::Impl {
+  ColliderOptions options;
+  std::shared_ptr<Mesh> mesh;            // OBBRSS tree over the body, double precision
+  fcl::Sphered point{0.0};               // the query point as a sphere of radius 0
+  fcl::DistanceRequestd request{false};  // nearest triangle only; the closest point is ours
+  BodyFrame body;                        // the current frame (exact closest points in float)
+  PseudoNormals pseudo;                  // sign of the depth; points into body.triangles
+  bool has_body = false;
+  CollideStats stats;
+
+  // exact closest point strictly within radius: FCL finds the nearest triangle (the result's
+  // min_distance starts at radius, which prunes the traversal), we recompute it exactly
+  ClosestPoint closest(const Vec3& p, Real radius) const {
+    fcl::DistanceResultd result;
+    result.min_distance =
+        radius == std::numeric_limits<Real>::infinity() ? std::numeric_limits<double>::max() : double(radius);
+    fcl::Transform3d at = fcl::Transform3d::Identity();
+    at.translation() = p.cast<double>();
+    fcl::distance(mesh.get(), fcl::Transform3d::Identity(), &point, at, request, result);
+    ClosestPoint cp;
+    if (result.b1 == fcl::DistanceResultd::NONE) return cp;
+    const int t = result.b1;
+    cp = closest_point_on_triangle(p, body.positions.col(body.triangles(0, t)),
+                                   body.positions.col(body.triangles(1, t)), body.positions.col(body.triangles(2, t)));
+    cp.triangle = t;
+    if (!(cp.dist2 < radius * radius)) cp.triangle = -1;
+    return cp;
+  }
+};
+
+FclCollider::FclCollider(const ColliderOptions& options) : impl_(std::make_unique<Impl>()) { impl_->options = options; }
+
+FclCollider::~FclCollider() = default;
+
+void FclCollider::set_body(const BodyFrame& body) {
+  Stopwatch sw;
+  validate_body(body, "fcl collider");
+  impl_->has_body = false;
+  impl_->body = body;
+  impl_->pseudo = PseudoNormals(impl_->body);
+  // conversion to double, then the OBBRSS tree
+  std::vector<fcl::Vector3d> vertices(static_cast<std::size_t>(body.vertex_count()));
+  for (Eigen::Index i = 0; i < body.positions.cols(); ++i) vertices[std::size_t(i)] = to_double(body.positions, i);
+  std::vector<fcl::Triangle> triangles(static_cast<std::size_t>(body.triangle_count()));
+  for (Eigen::Index t = 0; t < body.triangles.cols(); ++t)
+    triangles[std::size_t(t)] = fcl::Triangle(std::size_t(body.triangles(0, t)), std::size_t(body.triangles(1, t)),
+                                              std::size_t(body.triangles(2, t)));
+  auto mesh = std::make_shared<Mesh>();
+  if (mesh->beginModel(body.triangle_count(), body.vertex_count()) != fcl::BVH_OK ||
+      mesh->addSubModel(vertices, triangles) != fcl::BVH_OK || mesh->endModel() != fcl::BVH_OK)
+    throw std::runtime_error("fcl collider: building the OBBRSS tree failed");
+  impl_->mesh = std::move(mesh);
+  impl_->has_body = true;
+  impl_->stats.setup_ms += sw.ms();
+}
+
+void FclCollider::update_body(const BodyFrame& body) {
+  Stopwatch sw;
+  detail::check_update(impl_->body, impl_->has_body, body, "fcl collider");
+  impl_->body.positions = body.positions;
+  impl_->body.normals = body.normals;
+  impl_->body.velocities = body.velocities;
+  impl_->body.time_s = body.time_s;
+  impl_->body.moving = body.moving;
+  impl_->pseudo = PseudoNormals(impl_->body);
+  // refit the tree bottom-up to the new vertices (no rebuild)
+  Mesh& mesh = *impl_->mesh;
+  if (mesh.beginUpdateModel() != fcl::BVH_OK) throw std::runtime_error("fcl collider: beginUpdateModel failed");
+  for (Eigen::Index i = 0; i < body.positions.cols(); ++i) mesh.updateVertex(to_double(body.positions, i));
+  if (mesh.endUpdateModel(true, false) != fcl::BVH_OK) throw std::runtime_error("fcl collider: endUpdateModel failed");
+  impl_->stats.update_ms += sw.ms();
+  ++impl_->stats.updates;
+}
+
+void FclCollider::query(PointsView points, ContactsOut out) {
+  Stopwatch sw;
+  Impl& s = *impl_;
+  const auto find = [&s](const Vec3& p, Real radius) { return s.closest(p, radius); };
+  for (std::size_t i = 0; i < points.count; ++i) {
+    const Vec3 p = points[i];
+    if (!s.has_body || !p.allFinite()) {
+      out[i] = Contact{};
+      ++s.stats.degenerate;
+      continue;
+    }
+    out[i] = detail::answer_point(s.body, s.pseudo, p, s.options, find);
+    s.stats.hits += out[i].hit;
+  }
+  s.stats.points += static_cast<std::int64_t>(points.count);
+  ++s.stats.queries;
+  s.stats.query_ms += sw.ms();
+}
+
+CollideStats FclCollider::stats() const { return impl_->stats; }
+
+std::unique_ptr<Collider> make_fcl_collider(const ColliderOptions& options) {
+  return std::make_unique<FclCollider>(options);
+}
+
+}  // namespace clothbench

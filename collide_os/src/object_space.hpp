@@ -1,0 +1,42 @@
+#pragma once
+// internal: what every object-space collider shares: the contract's answer from a closest-point
+// search, and the checks of set_body / update_body
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "clothbench/sim/collider.hpp"
+#include "clothbench/sim/mesh_query.hpp"
+
+namespace clothbench::detail {
+
+/// Contact for p from `find(p, radius)` (exact closest point strictly within radius [m], or
+/// triangle = -1): within search_radius the exact answer; otherwise an unbounded search decides
+/// inside (exact depth, hit) or far outside (hit = false, depth = search_radius, a lower bound).
+template <class Find>
+Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const Vec3& p, const ColliderOptions& options,
+                     const Find& find) {
+  const ClosestPoint near = find(p, options.search_radius);
+  if (near.triangle >= 0) return contact_from_closest(body, pseudo, p, near, options.tol);
+  // nothing within the radius: only a point deep inside can still be a hit
+  const ClosestPoint any = find(p, std::numeric_limits<Real>::infinity());
+  Contact c = contact_from_closest(body, pseudo, p, any, options.tol);
+  if (c.hit) return c;
+  Contact far;
+  far.depth = options.search_radius;
+  return far;
+}
+
+/// Throws std::invalid_argument naming `what` when `body` cannot replace `current` in
+/// update_body: no body set yet, a different topology, or a malformed frame.
+inline void check_update(const BodyFrame& current, bool has_body, const BodyFrame& body, const std::string& what) {
+  if (!has_body) throw std::invalid_argument(what + ": update_body called before set_body");
+  validate_body(body, what);
+  if (body.vertex_count() != current.vertex_count() || body.triangle_count() != current.triangle_count() ||
+      body.triangles != current.triangles)
+    throw std::invalid_argument(what + ": update_body needs the topology of set_body (" +
+                                std::to_string(current.vertex_count()) + " vertices, " +
+                                std::to_string(current.triangle_count()) + " triangles)");
+}
+
+}  // namespace clothbench::detail
