@@ -85,7 +85,9 @@ void FclCollider::update_body(const BodyFrame& body) {
   impl_->body.time_s = body.time_s;
   impl_->body.moving = body.moving;
   impl_->pseudo = PseudoNormals(impl_->body);
-  // refit the tree bottom-up to the new vertices (no rebuild)
+  // refit every node from its triangles, top-down (no rebuild): FCL's bottom-up refit merges
+  // children with OBBRSS operator+, which gave wrong nearest triangles on the walking body
+  // (1981 of 2000 points off); FCL fits each node over the previous and the new vertices
   Mesh& mesh = *impl_->mesh;
   if (mesh.beginUpdateModel() != fcl::BVH_OK) throw std::runtime_error("fcl collider: beginUpdateModel failed");
   for (Eigen::Index i = 0; i < body.positions.cols(); ++i) mesh.updateVertex(to_double(body.positions, i));

@@ -3,7 +3,7 @@
 /// Per query point: the nearest body triangle within ColliderOptions::search_radius from FCL's
 /// sphere-to-mesh distance, then the exact closest point, pseudo-normal sign and barycentric
 /// normal/velocity from mesh_query.hpp, so answers equal `brute`'s. Moving bodies are refitted
-/// (beginUpdateModel / updateVertex / endUpdateModel), never rebuilt.
+/// (beginUpdateModel / updateVertex / endUpdateModel, top-down refit), never rebuilt.
 #include <memory>
 
 #include "clothbench/sim/collider.hpp"
