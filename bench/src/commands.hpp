@@ -11,6 +11,7 @@ using Action = std::function<int()>;
 
 void add_colliders_command(CLI::App& app, Action& action);
 void add_demo_command(CLI::App& app, Action& action);
+void add_maps_command(CLI::App& app, Action& action);
 void add_body_command(CLI::App& app, Action& action);
 
 }  // namespace clothbench::cli
