@@ -15,6 +15,7 @@ struct EmbreeCollider::Impl {
   detail::EmbreeScene scene;
   BodyFrame body;        // the current frame (normals and velocities interpolated from it)
   PseudoNormals pseudo;  // sign of the depth; points into body.triangles
+  Box3 box;              // bounding box of body.positions [m]
   bool has_body = false;
   CollideStats stats;
 
@@ -34,7 +35,7 @@ struct EmbreeCollider::Impl {
         ++degenerate;
         continue;
       }
-      out[i] = detail::answer_point(body, pseudo, p, options, find);
+      out[i] = detail::answer_point(body, pseudo, box, p, options, find);
       hits += out[i].hit;
     }
     return {hits, degenerate};
@@ -51,6 +52,7 @@ void EmbreeCollider::set_body(const BodyFrame& body) {
   impl_->has_body = false;
   impl_->body = body;
   impl_->pseudo = PseudoNormals(impl_->body);
+  impl_->box = bounding_box(impl_->body.positions);
   impl_->scene.build(impl_->body);
   impl_->has_body = true;
   impl_->stats.setup_ms += sw.ms();
@@ -65,6 +67,7 @@ void EmbreeCollider::update_body(const BodyFrame& body) {
   impl_->body.time_s = body.time_s;
   impl_->body.moving = body.moving;
   impl_->pseudo = PseudoNormals(impl_->body);
+  impl_->box = bounding_box(impl_->body.positions);
   impl_->scene.refit(impl_->body.positions);
   impl_->stats.update_ms += sw.ms();
   ++impl_->stats.updates;

@@ -27,6 +27,7 @@ struct FclCollider::Impl {
   fcl::DistanceRequestd request{false};  // nearest triangle only; the closest point is ours
   BodyFrame body;                        // the current frame (exact closest points in float)
   PseudoNormals pseudo;                  // sign of the depth; points into body.triangles
+  Box3 box;                              // bounding box of body.positions [m]
   bool has_body = false;
   CollideStats stats;
 
@@ -60,6 +61,7 @@ void FclCollider::set_body(const BodyFrame& body) {
   impl_->has_body = false;
   impl_->body = body;
   impl_->pseudo = PseudoNormals(impl_->body);
+  impl_->box = bounding_box(impl_->body.positions);
   // conversion to double, then the OBBRSS tree
   std::vector<fcl::Vector3d> vertices(static_cast<std::size_t>(body.vertex_count()));
   for (Eigen::Index i = 0; i < body.positions.cols(); ++i) vertices[std::size_t(i)] = to_double(body.positions, i);
@@ -85,6 +87,7 @@ void FclCollider::update_body(const BodyFrame& body) {
   impl_->body.time_s = body.time_s;
   impl_->body.moving = body.moving;
   impl_->pseudo = PseudoNormals(impl_->body);
+  impl_->box = bounding_box(impl_->body.positions);
   // refit every node from its triangles, top-down (no rebuild): FCL's bottom-up refit merges
   // children with OBBRSS operator+, which gave wrong nearest triangles on the walking body
   // (1981 of 2000 points off); FCL fits each node over the previous and the new vertices
@@ -107,7 +110,7 @@ void FclCollider::query(PointsView points, ContactsOut out) {
       ++s.stats.degenerate;
       continue;
     }
-    out[i] = detail::answer_point(s.body, s.pseudo, p, s.options, find);
+    out[i] = detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find);
     s.stats.hits += out[i].hit;
   }
   s.stats.points += static_cast<std::int64_t>(points.count);

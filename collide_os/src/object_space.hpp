@@ -11,20 +11,22 @@
 namespace clothbench::detail {
 
 /// Contact for p from `find(p, radius)` (exact closest point strictly within radius [m], or
-/// triangle = -1): within search_radius the exact answer; otherwise an unbounded search decides
-/// inside (exact depth, hit) or far outside (hit = false, depth = search_radius, a lower bound).
+/// triangle = -1): within search_radius the exact answer; otherwise a point outside the body's
+/// bounding box `box` is far outside, and for the rest an unbounded search decides inside (exact
+/// depth, hit) or far outside (hit = false, depth = search_radius, a lower bound).
 template <class Find>
-Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const Vec3& p, const ColliderOptions& options,
-                     const Find& find) {
+Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const Box3& box, const Vec3& p,
+                     const ColliderOptions& options, const Find& find) {
   const ClosestPoint near = find(p, options.search_radius);
   if (near.triangle >= 0) return contact_from_closest(body, pseudo, p, near, options.tol);
-  // nothing within the radius: only a point deep inside can still be a hit
-  const ClosestPoint any = find(p, std::numeric_limits<Real>::infinity());
-  Contact c = contact_from_closest(body, pseudo, p, any, options.tol);
-  if (c.hit) return c;
   Contact far;
   far.depth = options.search_radius;
-  return far;
+  // outside the bounding box of a closed mesh is outside the mesh
+  if ((p.array() < box.min.array()).any() || (p.array() > box.max.array()).any()) return far;
+  // nothing within the radius: only a point deep inside can still be a hit
+  const ClosestPoint any = find(p, std::numeric_limits<Real>::infinity());
+  const Contact c = contact_from_closest(body, pseudo, p, any, options.tol);
+  return c.hit ? c : far;
 }
 
 /// Throws std::invalid_argument naming `what` when `body` cannot replace `current` in
