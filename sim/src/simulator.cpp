@@ -93,7 +93,8 @@ void validate(const Material& m, const SolverParams& p) {
   require(p.stiff_factor >= 1, "stiff_factor", ">= 1", p.stiff_factor);
   require(p.limit_passes >= 1, "limit_passes", ">= 1", p.limit_passes);
   require(p.gravity.allFinite(), "gravity", "finite", p.gravity.norm());
-  require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m", p.seam_stiffness);
+  require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m (0 = automatic)", p.seam_stiffness);
+  require(p.seam_period > 0, "seam_period", "> 0 s", p.seam_period);
   require(p.attraction_speed > 0, "attraction_speed", "> 0 m/s", p.attraction_speed);
   require(p.merge_distance > 0, "merge_distance", "> 0 m", p.merge_distance);
   require(p.max_speed > 0, "max_speed", "> 0 m/s", p.max_speed);
@@ -115,8 +116,13 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   const Real k_kind[kSpringKinds] = {material_.k_structural, material_.k_shear, material_.k_flexion};
   k_.resize(ns);
   for (Eigen::Index s = 0; s < ns; ++s) k_[s] = factor * k_kind[static_cast<int>(mesh_.kind[s])];
-  if (params_.seam_stiffness == 0) params_.seam_stiffness = factor * material_.k_structural;
   m_ = mesh_.vertex_area * material_.density;
+  // elastic seams: given, or mass-relative so that a pair closes in about a quarter of seam_period
+  const Real omega = Real(2 * M_PI) / params_.seam_period;
+  seam_k_.resize(mesh_.seam_pairs.cols());
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
+    seam_k_[p] = params_.seam_stiffness > 0 ? params_.seam_stiffness
+                                            : Real(0.5) * (m_[mesh_.seam_pairs(0, p)] + m_[mesh_.seam_pairs(1, p)]) * omega * omega;
   inv_m_ = m_.cwiseInverse();
   for (auto a : mesh_.attached) inv_m_[a] = 0;
   x_ = mesh_.positions;
@@ -128,7 +134,7 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   // time step: given, checked against Eq. 4, or chosen from it
   const Real bound = stable_dt();
   if (params_.dt == 0) {
-    dt_ = params_.dt_fraction * bound;
+    dt_ = params_.dt_fraction * std::min(bound, spectral_dt());
   } else if (params_.dt > bound && !params_.allow_unstable_dt) {
     throw std::invalid_argument("dt = " + std::to_string(params_.dt) + " s exceeds the stability bound " +
                                 std::to_string(bound) +
@@ -142,9 +148,24 @@ Real Simulator::stable_dt() const {
   // dressing Eq. 4: dt <= 0.4 pi sqrt(m / K), K the highest stiffness, m the lightest point
   Real k_max = k_.size() ? k_.maxCoeff() : Real(0);
   if (mesh_.seam_pairs.cols() && params_.seam_method == SeamMethod::kElastic)
-    k_max = std::max(k_max, params_.seam_stiffness);
+    k_max = std::max(k_max, seam_k_.size() ? seam_k_.maxCoeff() : Real(0));
   if (!(k_max > 0)) return Real(1e-2);
   return Real(0.4 * M_PI) * std::sqrt(m_.minCoeff() / k_max);
+}
+
+Real Simulator::spectral_dt() const {
+  // Gershgorin: omega^2 <= max_v sum_s k_s (1/m_v + 1/sqrt(m_v m_u)) over the springs s = (v, u)
+  Scalars row = Scalars::Zero(m_.size());
+  const auto add = [&](int a, int b, Real k) {
+    const Real cross = k / std::sqrt(m_[a] * m_[b]);
+    row[a] += k / m_[a] + cross;
+    row[b] += k / m_[b] + cross;
+  };
+  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) add(mesh_.springs(0, s), mesh_.springs(1, s), k_[s]);
+  if (params_.seam_method == SeamMethod::kElastic)
+    for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) add(mesh_.seam_pairs(0, p), mesh_.seam_pairs(1, p), seam_k_[p]);
+  const Real omega2 = row.size() ? row.maxCoeff() : Real(0);
+  return omega2 > 0 ? Real(2) / std::sqrt(omega2) : Real(1e-2);
 }
 
 bool Simulator::step() {
@@ -215,7 +236,7 @@ void Simulator::accumulate_forces() {
   for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
     if (merged_[static_cast<std::size_t>(p)]) continue;
     const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
-    const Vec3 fa = -params_.seam_stiffness * (x_.col(a) - x_.col(b));
+    const Vec3 fa = -seam_k_[p] * (x_.col(a) - x_.col(b));
     col(f_, a) += fa;
     col(f_, b) -= fa;
   }

@@ -42,7 +42,7 @@ const char* to_string(Phase p);
 
 /// Solver parameters; every field has a documented default.
 struct SolverParams {
-  Real dt = 0;                   ///< time step [s]; 0 = automatic: dt_fraction x the Eq. 4 bound
+  Real dt = 0;                   ///< time step [s]; 0 = automatic: dt_fraction x min(Eq. 4 bound, spectral_dt)
   Real dt_fraction = 0.9f;       ///< automatic dt as a fraction of the Eq. 4 bound (0, 1]
   bool allow_unstable_dt = false;///< accept a given dt above the Eq. 4 bound (stability studies)
   Limit limit = Limit::kVelocity;///< super-elasticity limit
@@ -53,7 +53,9 @@ struct SolverParams {
   bool reaction_force = false;   ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
-  Real seam_stiffness = 0;       ///< elastic seam springs (rest length 0) [N/m]; 0 = k_structural
+  Real seam_stiffness = 0;       ///< elastic seam springs (rest length 0) [N/m]; 0 = automatic from seam_period
+  Real seam_period = 0.5f;       ///< automatic seam stiffness: each pair k = m (2 pi / seam_period)^2 [s], so
+                                 ///< pairs close like an oscillator of this period whatever the grid's masses
   Real attraction_speed = 0.5f;  ///< c_attraction of Durupinar Eq. 1 [m/s]
   Real merge_distance = 0.002f;  ///< seam pairs closer than this are merged [m]
   Real max_speed = 50.f;         ///< divergence: any vertex faster than this [m/s]
@@ -117,6 +119,11 @@ class Simulator {
 
   /// The Eq. 4 bound 0.4 pi sqrt(m_min / K_max) [s] for the current stiffnesses.
   Real stable_dt() const;
+  /// 2 / omega_max with omega_max^2 from Gershgorin's bound on M^-1 K (every spring and seam at
+  /// every vertex) [s]: symplectic Euler is stable below it. Eq. 4 only looks at the stiffest single
+  /// spring; a light boundary vertex with many springs can need less, so the automatic dt takes
+  /// the smaller of the two.
+  Real spectral_dt() const;
   Real dt() const { return dt_; }
 
   const ClothMesh& mesh() const { return mesh_; }
@@ -161,6 +168,7 @@ class Simulator {
   Material material_;
   SolverParams params_;
   Scalars k_;          // stiffness per spring [N/m] (ns)
+  Scalars seam_k_;     // elastic seam stiffness per seam pair [N/m] (np)
   Scalars m_;          // mass per vertex [kg] (nv)
   Scalars inv_m_;      // 1/m, 0 for attached vertices (nv)
   Points3 x_, v_, f_;  // positions [m], velocities [m/s], forces [N] (3 x nv)

@@ -1,0 +1,87 @@
+// clothbench reproduce [--only ID,...] [--out DIR] [--quick] [--repetitions N]
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "clothbench/io/errors.hpp"
+#include "clothbench/sim/timer.hpp"
+#include "commands.hpp"
+#include "experiment.hpp"
+#include "report.hpp"
+
+namespace clothbench::cli {
+
+namespace {
+
+struct ReproduceArgs {
+  std::vector<std::string> only;
+  std::string out = "results";
+  bool quick = false;
+  int repetitions = 1;
+};
+
+// results/README.md: the index of every experiment and the machine
+void write_index(const std::string& out, const std::vector<std::pair<std::string, double>>& done, bool quick) {
+  const nlohmann::json c = machine_context();
+  std::ostringstream md;
+  md << "# clothbench results\n\nWritten by `clothbench reproduce" << (quick ? " --quick" : "")
+     << "` (`make reproduce`); never edited by hand. Regenerate with `make reproduce`, or one experiment with "
+        "`build/bin/clothbench reproduce --only ID`.\n\n"
+     << "Machine: " << c["cpu_model"].get<std::string>() << ", " << c["num_cpus"] << " cores, host "
+     << c["host_name"].get<std::string>() << "; compiler " << c["compiler"].get<std::string>() << ", "
+     << c["build_type"].get<std::string>() << ", flags `" << c["cxx_flags"].get<std::string>() << "`; git "
+     << c["git_sha"].get<std::string>() << "; " << c["date"].get<std::string>() << ".\n\n";
+  MarkdownTable t({"ID", "what", "table", "data", "wall time [s]"});
+  for (const auto& [id, seconds] : done) {
+    std::string title;
+    for (const auto& e : experiments())
+      if (e.id == id) title = e.title;
+    t.row({id, title, "[" + id + ".md](" + id + ".md)", "[" + id + ".json](" + id + ".json)", num(seconds, 1)});
+  }
+  md << t.str() << "\nCharts are `ID.png`; pictures of dressed bodies are under `pictures/`; maps under `maps/`; "
+     << "garment meshes under `garments/`.\n";
+  write_text_file(out + "/README.md", md.str());
+}
+
+int reproduce(const ReproduceArgs& a) {
+  std::set<std::string> wanted;
+  for (const auto& list : a.only) {
+    std::stringstream s(list);
+    for (std::string id; std::getline(s, id, ',');) wanted.insert(id);
+  }
+  std::string known;
+  for (const auto& e : experiments()) known += (known.empty() ? "" : ", ") + e.id;
+  for (const auto& id : wanted) {
+    bool found = false;
+    for (const auto& e : experiments()) found = found || e.id == id;
+    if (!found) throw InputError("--only: unknown experiment '" + id + "' (known: " + known + ")");
+  }
+  ExperimentContext ctx(a.out, a.quick, a.repetitions);
+  write_text_file(ctx.path(".write-test"), "");  // fail early on an unwritable output folder
+  std::vector<std::pair<std::string, double>> done;
+  for (const auto& e : experiments()) {
+    if (!wanted.empty() && !wanted.count(e.id)) continue;
+    std::cerr << "[" << e.id << "] " << e.title << "\n";
+    Stopwatch clock;
+    e.run(ctx);
+    done.emplace_back(e.id, clock.ms() / 1e3);
+    std::cerr << "[" << e.id << "] done in " << num(clock.ms() / 1e3, 1) << " s\n";
+  }
+  std::remove(ctx.path(".write-test").c_str());
+  if (wanted.empty()) write_index(a.out, done, a.quick);
+  return 0;
+}
+
+}  // namespace
+
+void add_reproduce_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<ReproduceArgs>();
+  auto* cmd = app.add_subcommand("reproduce", "Regenerate the papers' tables and charts with our figures beside theirs");
+  cmd->add_option("--only", args->only, "comma-separated experiment IDs (default: all)");
+  cmd->add_option("--out", args->out, "output folder")->capture_default_str();
+  cmd->add_flag("--quick", args->quick, "fewer iterations and sizes, same code paths (smoke test)");
+  cmd->add_option("--repetitions", args->repetitions, "runs per configuration (median reported)")->check(CLI::Range(1, 100));
+  cmd->callback([&action, args] { action = [args] { return reproduce(*args); }; });
+}
+
+}  // namespace clothbench::cli

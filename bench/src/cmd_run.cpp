@@ -1,0 +1,82 @@
+// clothbench run SCENE [--collider NAME] [--set key=value]... [--json FILE] [--png FILE]
+#include <cstdio>
+#include <iostream>
+
+#include "clothbench/io/errors.hpp"
+#include "commands.hpp"
+#include "picture.hpp"
+#include "report.hpp"
+#include "runner.hpp"
+
+namespace clothbench::cli {
+
+namespace {
+
+struct RunArgs {
+  std::string scene, collider, json, png;
+  std::vector<std::string> sets;
+  bool quiet = false;
+};
+
+void print_summary(const RunResult& r) {
+  std::printf("%s / %s: %d vertices (%d query points), body %ld triangles\n", r.scene.c_str(), r.collider.c_str(),
+              r.vertices, r.query_points, r.body_triangles);
+  std::printf("  %s\n", kDefinitions);
+  std::printf("  dt %.3f ms (Eq. 4 bound %.3f ms, Gershgorin bound %.3f ms), set-up %.1f ms\n", 1e3 * r.dt_s,
+              1e3 * r.dt_bound_s, 1e3 * r.dt_spectral_s, r.setup_ms);
+  std::printf("  %-8s %10s %10s %s\n", "phase", "iterations", "time [s]", "reached");
+  const auto phase = [](const char* name, const PhaseResult& p, const char* goal) {
+    std::printf("  %-8s %10ld %10.2f %s\n", name, p.iterations, p.wall_ms / 1e3, p.reached ? goal : "no");
+  };
+  phase("sew", r.sew, "sewn");
+  phase("drape", r.drape, "settled");
+  if (r.frames > 0) phase("animate", r.animate, "clip done");
+  std::printf("  per iteration %.3f ms (CD&R %.3f, CS %.3f)\n", r.ms_per_iteration(), r.cdr_ms_per_iteration(),
+              r.cs_ms_per_iteration());
+  if (r.frames > 0)
+    std::printf("  %ld frames, %.0f steps per frame, %.2f frames/s (skinning %.2f ms, collider update %.2f ms per frame)\n",
+                r.frames, r.steps_per_frame, 1e3 * double(r.frames) / r.animate.wall_ms,
+                r.skinning_ms / double(r.frames), r.collider_update_ms / double(r.frames));
+  if (r.divergence) {
+    std::printf("  DIVERGED at iteration %ld (%s), vertex %d: %s\n", r.divergence->iteration,
+                to_string(r.divergence->phase), r.divergence->vertex, r.divergence->reason.c_str());
+    return;
+  }
+  std::printf("  accuracy: %.2f %% inside, depth max %.2f mm, p95 %.2f mm; seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
+              r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.seam_gap_max_mm,
+              100 * r.strain_max, 100 * r.strain_p99);
+  std::printf("  converged %s\n", r.converged ? "yes" : "no");
+}
+
+int run(const RunArgs& a) {
+  Scene scene = load_scene(a.scene, a.sets);
+  if (!a.collider.empty()) scene.collider = a.collider;
+  RunOptions options;
+  options.progress = !a.quiet;
+  const RunResult r = run_scene(scene, options);
+  print_summary(r);
+  if (!a.json.empty())
+    write_text_file(a.json, result_document(nlohmann::json::array({result_row(r, scene.name + "/" + scene.collider)})).dump(2) + "\n");
+  if (!a.png.empty()) {
+    std::vector<Image> views;
+    for (View v : {View::kFront, View::kSide, View::kBack}) views.push_back(render_dressed(r.final_body, r.mesh, 480, v));
+    side_by_side(views).write_png(a.png);
+  }
+  return r.divergence ? 3 : 0;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<RunArgs>();
+  auto* cmd = app.add_subcommand("run", "Run one scene with one collider; exit 3 when the simulation diverged");
+  cmd->add_option("scene", args->scene, "scene file (TOML)")->required();
+  cmd->add_option("--collider", args->collider, "collider name (see `clothbench colliders`)");
+  cmd->add_option("--set", args->sets, "override a scene field: section.key=value (repeatable)");
+  cmd->add_option("--json", args->json, "write the result as JSON (Google Benchmark layout)");
+  cmd->add_option("--png", args->png, "write a picture of the dressed body (front, side, back)");
+  cmd->add_flag("--quiet", args->quiet, "no progress lines on stderr");
+  cmd->callback([&action, args] { action = [args] { return run(*args); }; });
+}
+
+}  // namespace clothbench::cli

@@ -1,0 +1,75 @@
+#pragma once
+/// The experiments of `clothbench reproduce`: each writes results/ID.md (our figures beside the
+/// papers'), results/ID.json (Google Benchmark layout) and its charts and pictures.
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "runner.hpp"
+
+namespace clothbench {
+
+/// A markdown table.
+class MarkdownTable {
+ public:
+  explicit MarkdownTable(std::vector<std::string> header) : header_(std::move(header)) {}
+  void row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
+  std::string str() const;
+
+ private:
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+/// What an experiment may use: cached scene runs, output writers, the options of the command.
+class ExperimentContext {
+ public:
+  ExperimentContext(std::string out_dir, bool quick, int repetitions);
+
+  /// Runs scenes/SCENE (relative to the source tree's scenes/) with a collider and overrides;
+  /// identical requests in one `reproduce` share one run. With repetitions > 1 the run is
+  /// repeated and the repetition with the median time per iteration is returned; every
+  /// repetition becomes a JSON row of the experiment that asked.
+  const RunResult& run(const std::string& scene, const std::string& collider, const std::vector<std::string>& sets = {},
+                       const RunOptions& options = {});
+  /// Colliders of `wanted` that this build has (the others are reported as not built).
+  std::vector<std::string> colliders(const std::vector<std::string>& wanted) const;
+  /// Adds a JSON row for the current experiment.
+  void add_row(nlohmann::json row) { rows_.push_back(std::move(row)); }
+  /// Writes OUT/ID.md (title, definitions, machine, `body`) and OUT/ID.json (rows so far).
+  void write(const std::string& id, const std::string& title, const std::string& body);
+  /// Renders a chart through bench/plot/plot.py (matplotlib) into OUT/NAME.png; `spec` holds
+  /// title, xlabel, ylabel, series [{label, x, y}], optional logx/logy. Returns false (and says
+  /// why on stderr) when python3/matplotlib are missing.
+  bool chart(const std::string& name, nlohmann::json spec);
+  /// OUT/relative, creating its folder.
+  std::string path(const std::string& relative) const;
+
+  bool quick() const { return quick_; }
+
+ private:
+  std::string out_dir_;
+  bool quick_;
+  int repetitions_;
+  std::map<std::string, std::vector<RunResult>> cache_;
+  nlohmann::json rows_ = nlohmann::json::array();
+};
+
+/// One experiment of `clothbench reproduce`.
+struct Experiment {
+  std::string id;
+  std::string title;
+  std::function<void(ExperimentContext&)> run;
+};
+
+/// Every experiment, in the order `reproduce` runs them.
+const std::vector<Experiment>& experiments();
+
+/// The experiments defined per file (each exp_*.cpp adds its own).
+void add_dressing_experiments(std::vector<Experiment>& out);
+void add_walking_experiments(std::vector<Experiment>& out);
+void add_durupinar_experiments(std::vector<Experiment>& out);
+
+}  // namespace clothbench

@@ -1,0 +1,144 @@
+// Result rows, machine context and atomic writes.
+#include "report.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+#include "clothbench/config.h"
+#include "clothbench/io/errors.hpp"
+
+namespace clothbench {
+
+namespace {
+
+std::string command_output(const std::string& command) {
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  if (!pipe) return "";
+  std::string out;
+  std::array<char, 256> buf{};
+  while (std::fgets(buf.data(), buf.size(), pipe.get())) out += buf.data();
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+
+}  // namespace
+
+nlohmann::json machine_context() {
+  char host[256] = {};
+  gethostname(host, sizeof host - 1);
+  const std::time_t now = std::time(nullptr);
+  char date[64];
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  const std::string sha = command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) + "' rev-parse --short HEAD 2>/dev/null");
+  const std::string dirty = command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) + "' status --porcelain --untracked-files=no 2>/dev/null");
+  return {{"date", date},
+          {"host_name", host},
+          {"executable", "clothbench"},
+          {"num_cpus", std::thread::hardware_concurrency()},
+          {"cpu_model", cpu_model()},
+          {"compiler", CLOTHBENCH_CXX_COMPILER},
+          {"build_type", CLOTHBENCH_BUILD_TYPE},
+          {"cxx_flags", CLOTHBENCH_CXX_FLAGS},
+          {"library_build_type", CLOTHBENCH_BUILD_TYPE},
+          {"git_sha", sha.empty() ? "unknown" : sha + (dirty.empty() ? "" : "-dirty")},
+          {"threads", 1}};
+}
+
+nlohmann::json result_row(const RunResult& r, const std::string& name) {
+  nlohmann::json row{{"name", name},
+                     {"run_type", "iteration"},
+                     {"iterations", r.iterations()},
+                     {"real_time", r.ms_per_iteration()},
+                     {"cpu_time", r.ms_per_iteration()},
+                     {"time_unit", "ms"},
+                     {"vertices", r.vertices},
+                     {"query_points", r.query_points},
+                     {"body_triangles", r.body_triangles},
+                     {"total_s", r.total_s()},
+                     {"setup_ms", r.setup_ms},
+                     {"cdr_ms", r.cdr_ms_per_iteration()},
+                     {"cs_ms", r.cs_ms_per_iteration()},
+                     {"dt_ms", 1e3 * r.dt_s},
+                     {"dt_bound_ms", 1e3 * r.dt_bound_s},
+                     {"dt_spectral_ms", 1e3 * r.dt_spectral_s},
+                     {"sew_iterations", r.sew.iterations},
+                     {"drape_iterations", r.drape.iterations},
+                     {"threads", r.threads},
+                     {"converged", r.converged ? 1 : 0},
+                     {"diverged", r.divergence ? 1 : 0}};
+  if (r.frames > 0) {
+    row["frames"] = r.frames;
+    row["fps"] = r.animate.wall_ms > 0 ? 1e3 * double(r.frames) / r.animate.wall_ms : 0.0;
+    row["steps_per_frame"] = r.steps_per_frame;
+    row["skinning_ms_per_frame"] = r.skinning_ms / double(r.frames);
+    row["collider_update_ms_per_frame"] = r.collider_update_ms / double(r.frames);
+    row["animate_iterations"] = r.animate.iterations;
+  }
+  if (r.divergence) {
+    row["diverged_iteration"] = r.divergence->iteration;
+    row["diverged_phase"] = to_string(r.divergence->phase);
+    row["diverged_vertex"] = r.divergence->vertex;
+    row["diverged_reason"] = r.divergence->reason;
+    return row;  // no accuracy for a diverged run
+  }
+  row["inside_pct"] = r.accuracy.inside_pct;
+  row["depth_max_mm"] = r.accuracy.depth_max_mm;
+  row["depth_p95_mm"] = r.accuracy.depth_p95_mm;
+  row["seam_gap_max_mm"] = r.seam_gap_max_mm;
+  row["strain_max"] = r.strain_max;
+  row["strain_p99"] = r.strain_p99;
+  row["kinetic_energy_j"] = r.kinetic_energy;
+  return row;
+}
+
+nlohmann::json result_document(const nlohmann::json& rows) {
+  return {{"context", machine_context()}, {"benchmarks", rows}};
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(path).parent_path();
+  std::error_code ec;
+  if (!dir.empty()) fs::create_directories(dir, ec);
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw InputError(path + ": cannot write (is the directory writable?)");
+    out << text;
+    if (!out.flush()) {
+      fs::remove(tmp, ec);
+      throw InputError(path + ": write failed");
+    }
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw InputError(path + ": cannot rename the temporary file: " + ec.message());
+  }
+}
+
+std::string num(double v, int digits) {
+  if (!std::isfinite(v)) return "-";
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+}  // namespace clothbench

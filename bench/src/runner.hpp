@@ -1,0 +1,76 @@
+#pragma once
+/// Runs a scene: body and garments loaded, sew (seam forces, no gravity) -> drape (gravity) until
+/// settled -> animate (moving bodies), one collider, accuracy from the exact oracle at the end.
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "clothbench/sim/simulator.hpp"
+#include "oracle.hpp"
+#include "scene.hpp"
+
+namespace clothbench {
+
+/// The definitions every table prints in its header.
+inline constexpr const char* kDefinitions =
+    "iteration = one explicit Euler step of dt (Eq. 3) with detection, response and limits; "
+    "sewn = every seam pair closer than stop.sewn_gap_mm (or merged); "
+    "settled = RMS cloth speed below stop.settle_speed for stop.settle_window_s of simulated time; "
+    "times are wall clock on one thread, set-up (maps/BVH) excluded";
+
+/// One phase of a run.
+struct PhaseResult {
+  long iterations = 0;
+  double wall_ms = 0;    ///< simulation wall time of the phase (CD&R + CS + body updates)
+  double cdr_ms = 0;     ///< collision detection and response
+  double cs_ms = 0;      ///< cloth simulation
+  bool reached = false;  ///< sew: sewn; drape: settled; animate: clip finished
+};
+
+/// What a run measured. Times in ms unless named otherwise.
+struct RunResult {
+  std::string scene, collider;
+  int vertices = 0, query_points = 0;
+  long body_triangles = 0;
+  double dt_s = 0, dt_bound_s = 0, dt_spectral_s = 0;
+  PhaseResult sew, drape, animate;
+  long frames = 0;              ///< animation frames (body updates)
+  double steps_per_frame = 0;
+  double skinning_ms = 0;       ///< all body frame evaluations (LBS)
+  double collider_update_ms = 0;///< all collider updates (re-render / refit)
+  double setup_ms = 0;          ///< collider set-up (maps rendered / BVH built)
+  int threads = 1;
+  Accuracy accuracy;            ///< vertices and (with face queries) quad midpoints, end state
+  double seam_gap_max_mm = 0;
+  double strain_max = 0, strain_p99 = 0;
+  double kinetic_energy = 0;
+  double animate_strain_max = 0;///< largest structural strain seen at any animation frame
+  std::vector<float> sew_iteration_ms;  ///< wall time of every sew iteration (RunOptions::trace)
+  bool converged = false;       ///< sewn (when sewing) and settled
+  std::optional<Divergence> divergence;
+  BodyFrame final_body;         ///< for pictures
+  ClothMesh mesh;               ///< topology of the cloth (positions: the end state)
+
+  long iterations() const { return sew.iterations + drape.iterations + animate.iterations; }
+  double total_s() const { return (sew.wall_ms + drape.wall_ms + animate.wall_ms) / 1e3; }
+  double ms_per_iteration() const;
+  double cdr_ms_per_iteration() const;
+  double cs_ms_per_iteration() const;
+};
+
+/// Called after every animation frame: frame number (1-based), animation time [s], body, cloth.
+using FrameCallback = std::function<void(long frame, double t, const BodyFrame& body, const Simulator& cloth)>;
+
+/// How run_scene reports.
+struct RunOptions {
+  bool progress = true;   ///< progress lines on stderr when a run takes more than a second
+  std::string label;      ///< prefix of progress lines
+  bool trace = false;     ///< record the wall time of every sew iteration
+  FrameCallback on_frame; ///< optional, per animation frame
+};
+
+/// Runs the scene with its collider. Throws InputError for bad input (files, parameters);
+/// a diverged simulation is reported in the result, not thrown.
+RunResult run_scene(const Scene& scene, const RunOptions& options = {});
+
+}  // namespace clothbench

@@ -1,0 +1,298 @@
+// Scene files: TOML through toml++, every key checked, errors located at file:line.
+#include "scene.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "clothbench/config.h"
+#include "clothbench/io/data_root.hpp"
+#include "clothbench/io/errors.hpp"
+
+namespace clothbench {
+
+namespace {
+
+// one table of the scene: typed reads that remember which keys were used
+class Section {
+ public:
+  Section(const toml::table* table, std::string file, std::string name)
+      : table_(table), file_(std::move(file)), name_(std::move(name)) {}
+
+  [[noreturn]] void fail(const toml::node& node, const std::string& key, const std::string& msg) const {
+    const int line = static_cast<int>(node.source().begin.line);
+    const std::string where = line > 0 ? "" : " (from --set)";
+    throw InputError(located(file_, line, name_ + "." + key + where + ": " + msg));
+  }
+
+  const toml::node* find(const std::string& key) {
+    used_.insert(key);
+    return table_ ? table_->get(key) : nullptr;
+  }
+
+  template <class T>
+  void number(const std::string& key, T& out, double lo, double hi) {
+    const toml::node* n = find(key);
+    if (!n) return;
+    const auto v = n->value<double>();
+    if (!v || n->is_boolean()) fail(*n, key, "expected a number");
+    if (!std::isfinite(*v) || *v < lo || *v > hi)
+      fail(*n, key, "must be in [" + fmt(lo) + ", " + fmt(hi) + "], got " + fmt(*v));
+    if constexpr (std::is_integral_v<T>) {
+      if (std::floor(*v) != *v) fail(*n, key, "expected an integer");
+    }
+    out = static_cast<T>(*v);
+  }
+
+  void flag(const std::string& key, bool& out) {
+    const toml::node* n = find(key);
+    if (!n) return;
+    const auto v = n->value<bool>();
+    if (!v || !n->is_boolean()) fail(*n, key, "expected true or false");
+    out = *v;
+  }
+
+  void text(const std::string& key, std::string& out) {
+    const toml::node* n = find(key);
+    if (!n) return;
+    const auto v = n->value<std::string>();
+    if (!v || !n->is_string()) fail(*n, key, "expected a string");
+    out = *v;
+  }
+
+  void vec3(const std::string& key, Vec3& out) {
+    const toml::node* n = find(key);
+    if (!n) return;
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 3) fail(*n, key, "expected [x, y, z]");
+    for (int k = 0; k < 3; ++k) {
+      const auto v = a->get(k)->value<double>();
+      if (!v || !std::isfinite(*v)) fail(*n, key, "expected three finite numbers");
+      out[k] = static_cast<Real>(*v);
+    }
+  }
+
+  // a string converted by `parse` (which throws std::invalid_argument on unknown names)
+  template <class Parse>
+  void choice(const std::string& key, Parse parse) {
+    const toml::node* n = find(key);
+    if (!n) return;
+    const auto v = n->value<std::string>();
+    if (!v) fail(*n, key, "expected a string");
+    try {
+      parse(*v);
+    } catch (const std::invalid_argument& e) {
+      fail(*n, key, e.what());
+    }
+  }
+
+  // every key not read is an error: misspelt keys must not be silently ignored
+  void finish() const {
+    if (!table_) return;
+    for (auto&& [key, node] : *table_)
+      if (!used_.count(std::string(key.str()))) fail(node, std::string(key.str()), "unknown key");
+  }
+
+  static std::string fmt(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+
+ private:
+  const toml::table* table_;
+  std::string file_, name_;
+  std::set<std::string> used_;
+};
+
+void read_body(Section s, BodySpec& b) {
+  s.text("file", b.file);
+  s.text("animation", b.animation);
+  s.number("start_s", b.start_s, 0, 1e4);
+  s.number("end_s", b.end_s, -1, 1e4);
+  s.flag("walk_in_place", b.walk_in_place);
+  s.number("fps", b.fps, 1, 1000);
+  s.choice("shape", [&](const std::string& v) {
+    if (v != "mesh" && v != "sphere") throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + v + "\"");
+    b.shape = v;
+  });
+  s.number("radius", b.radius, 1e-3, 100);
+  s.vec3("center", b.center);
+  s.vec3("velocity", b.velocity);
+  s.number("move_s", b.move_s, 0, 1e4);
+  s.finish();
+}
+
+void read_garment(Section s, GarmentSpec& g) {
+  s.text("file", g.file);
+  s.number("vertices", g.vertices, 0, 1e6);
+  s.number("spacing_cm", g.spacing_cm, 0.05, 100);
+  s.flag("attach", g.attach);
+  s.finish();
+}
+
+void read_material(Section s, Material& m) {
+  s.number("density", m.density, 1e-4, 100);
+  s.number("k_structural", m.k_structural, 1e-3, 1e7);
+  s.number("k_shear", m.k_shear, 0, 1e7);
+  s.number("k_flexion", m.k_flexion, 0, 1e7);
+  s.number("damping", m.damping, 0, 1e3);
+  s.number("friction", m.friction, 0, 1);
+  s.number("reflection", m.reflection, 0, 1);
+  s.finish();
+}
+
+void read_solver(Section s, SolverParams& p) {
+  if (const toml::node* n = s.find("dt")) {
+    if (n->value<std::string>() == std::optional<std::string>("auto")) {
+      p.dt = 0;
+    } else {
+      s.number("dt", p.dt, 1e-7, 1);
+    }
+  }
+  s.number("dt_fraction", p.dt_fraction, 1e-3, 1);
+  s.flag("allow_unstable_dt", p.allow_unstable_dt);
+  s.choice("limit", [&](const std::string& v) { p.limit = parse_limit(v); });
+  s.number("threshold", p.threshold, 1e-4, 10);
+  s.number("stiff_factor", p.stiff_factor, 1, 1e4);
+  s.number("limit_passes", p.limit_passes, 1, 1000);
+  s.flag("face_queries", p.face_queries);
+  s.flag("reaction_force", p.reaction_force);
+  s.vec3("gravity", p.gravity);
+  s.choice("seam_method", [&](const std::string& v) { p.seam_method = parse_seam_method(v); });
+  s.number("seam_stiffness", p.seam_stiffness, 0, 1e7);
+  s.number("seam_period", p.seam_period, 1e-4, 100);
+  s.number("attraction_speed", p.attraction_speed, 0, 100);
+  s.number("merge_distance", p.merge_distance, 0, 1);
+  s.number("max_speed", p.max_speed, 1e-3, 1e6);
+  s.finish();
+}
+
+void read_collider(Section s, Scene& scene) {
+  ColliderOptions& o = scene.collider_options;
+  s.text("name", scene.collider);
+  s.text("dress_with", scene.dress_with);
+  s.number("tol", o.tol, 0, 1);
+  s.number("search_radius", o.search_radius, 1e-4, 10);
+  s.number("map_size", o.map_size, 16, 8192);
+  s.flag("side_layer", o.side_layer);
+  s.flag("fit_extent", o.fit_extent);
+  s.flag("float_maps", o.float_maps);
+  s.number("max_speed", o.max_speed, 1e-3, 1e3);
+  s.number("threads", o.threads, 1, 256);
+  s.finish();
+}
+
+void read_stop(Section s, StopRule& r) {
+  s.flag("sew", r.sew);
+  s.number("sew_max_s", r.sew_max_s, 0, 1e4);
+  s.number("sewn_gap_mm", r.sewn_gap_mm, 0, 1e4);
+  s.number("drape_max_s", r.drape_max_s, 0, 1e4);
+  s.number("settle_speed", r.settle_speed, 0, 100);
+  s.number("settle_window_s", r.settle_window_s, 0, 100);
+  s.number("max_iterations", r.max_iterations, 0, 1e9);
+  s.finish();
+}
+
+// "section.key=value": value in TOML syntax, or a bare word taken as a string
+void apply_override(toml::table& root, const std::string& item) {
+  const auto eq = item.find('=');
+  const auto dot = item.find('.');
+  if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 || dot + 1 == eq)
+    throw InputError("--set " + item + ": expected section.key=value");
+  const std::string section = item.substr(0, dot), key = item.substr(dot + 1, eq - dot - 1), text = item.substr(eq + 1);
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    parsed = toml::table{{"v", text}};
+  }
+  // a fresh node has no source position: messages then say "(from --set)"
+  const auto insert = [&](toml::table& t) { t.insert_or_assign(key, *parsed.get("v")); };
+  if (section == "garment") {
+    toml::array* garments = root["garment"].as_array();
+    if (!garments) throw InputError("--set " + item + ": the scene has no [[garment]]");
+    for (auto& g : *garments)
+      if (auto* t = g.as_table()) insert(*t);
+    return;
+  }
+  if (!root.contains(section)) root.insert(section, toml::table{});
+  toml::table* t = root[section].as_table();
+  if (!t) throw InputError("--set " + item + ": '" + section + "' is not a table");
+  insert(*t);
+}
+
+Scene read_scene(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
+  for (const auto& o : overrides) apply_override(root, o);
+  Scene s;
+  s.path = file;
+  s.name = std::filesystem::path(file).stem().string();
+  const std::set<std::string> sections{"scene", "body", "garment", "material", "solver", "collider", "stop"};
+  for (auto&& [key, node] : root)
+    if (!sections.count(std::string(key.str())) || (key.str() != "garment" && !node.is_table()))
+      throw InputError(located(file, static_cast<int>(node.source().begin.line),
+                               "unknown section '" + std::string(key.str()) +
+                                   "' (sections: scene, body, [[garment]], material, solver, collider, stop)"));
+  Section head(root["scene"].as_table(), file, "scene");
+  head.text("name", s.name);
+  head.text("description", s.description);
+  head.finish();
+  read_body(Section(root["body"].as_table(), file, "body"), s.body);
+  if (const toml::node* g = root.get("garment")) {
+    const toml::array* list = g->as_array();
+    if (!list) throw InputError(located(file, static_cast<int>(g->source().begin.line), "garment: use [[garment]] tables"));
+    for (const auto& item : *list) {
+      if (!item.as_table()) throw InputError(located(file, static_cast<int>(item.source().begin.line), "garment: expected a table"));
+      GarmentSpec spec;
+      read_garment(Section(item.as_table(), file, "garment"), spec);
+      if (spec.file.empty()) throw InputError(located(file, static_cast<int>(item.source().begin.line), "garment.file is required"));
+      s.garments.push_back(spec);
+    }
+  }
+  read_material(Section(root["material"].as_table(), file, "material"), s.material);
+  read_solver(Section(root["solver"].as_table(), file, "solver"), s.solver);
+  read_collider(Section(root["collider"].as_table(), file, "collider"), s);
+  read_stop(Section(root["stop"].as_table(), file, "stop"), s.stop);
+  return s;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    throw InputError(located(name, static_cast<int>(e.source().begin.line), std::string(e.description())));
+  }
+  return read_scene(root, name, overrides);
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(located(path, 0, "scene file not found"));
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(located(path, static_cast<int>(e.source().begin.line), std::string(e.description())));
+  }
+  return read_scene(root, path, overrides);
+}
+
+std::string resolve_scene_path(const Scene& scene, const std::string& ref) {
+  namespace fs = std::filesystem;
+  if (ref == "debian:human") return kDebianHumanBody;
+  if (ref.rfind("data:", 0) == 0) return data_path(ref.substr(5));
+  const fs::path p(ref);
+  if (p.is_absolute()) return ref;
+  // scene-relative first, then the source tree's scenes/ folder
+  const fs::path beside = fs::path(scene.path).parent_path() / p;
+  std::error_code ec;
+  if (!scene.path.empty() && fs::exists(beside, ec)) return beside.string();
+  return (fs::path(CLOTHBENCH_SOURCE_DIR) / "scenes" / p).string();
+}
+
+}  // namespace clothbench

@@ -1,0 +1,73 @@
+#pragma once
+/// Scene files (TOML, documented in scenes/README.md): body and motion, garments, material,
+/// solver, collider, stop rule. Every field has a default; unknown keys are errors (file:line).
+#include <string>
+#include <vector>
+
+#include "clothbench/sim/collider.hpp"
+#include "clothbench/sim/simulator.hpp"
+
+namespace clothbench {
+
+/// The body: a mesh file (static or animated) or an analytic sphere moving at constant velocity.
+struct BodySpec {
+  std::string file = "debian:human";  ///< "debian:human", "data:REL" (data root) or a path (scene-relative)
+  std::string animation;              ///< empty: static rest pose
+  double start_s = 0;                 ///< animation window [s]
+  double end_s = -1;                  ///< < 0: the clip's end
+  bool walk_in_place = true;          ///< remove the root's horizontal travel
+  double fps = 60;                    ///< body frames per second of animation (collider updates)
+  std::string shape = "mesh";         ///< "mesh" or "sphere"
+  Real radius = 0.25f;                ///< sphere radius [m]
+  Vec3 center = Vec3(0, 0.5f, 0);     ///< sphere centre at t = 0 [m]
+  Vec3 velocity = Vec3::Zero();       ///< sphere velocity [m/s] during the animate phase
+  double move_s = 0;                  ///< sphere: seconds of motion (animate phase)
+};
+
+/// One garment of the scene.
+struct GarmentSpec {
+  std::string file;        ///< pattern file (scene-relative, or relative to scenes/)
+  int vertices = 0;        ///< target vertex count (0: use spacing_cm)
+  double spacing_cm = 2;   ///< grid spacing when vertices = 0 [cm]
+  bool attach = true;      ///< honour the pattern's attached edges (Durupinar 3.2)
+};
+
+/// When each phase ends (definitions printed in every table header).
+struct StopRule {
+  bool sew = true;              ///< run the sew phase (seam forces, no gravity)
+  double sew_max_s = 3;         ///< sew phase limit [simulated s]
+  Real sewn_gap_mm = 2;         ///< sewn: every seam pair closer than this [mm] (or merged)
+  double drape_max_s = 2;       ///< drape phase limit [simulated s]
+  Real settle_speed = 0.05f;    ///< settled: RMS cloth speed below this [m/s] ...
+  double settle_window_s = 0.1; ///< ... for this long [simulated s]
+  long max_iterations = 0;      ///< > 0: stop every phase after this many iterations (timing runs)
+};
+
+/// A whole scene.
+struct Scene {
+  std::string path;   ///< the file it came from ("" when built in code)
+  std::string name;
+  std::string description;
+  BodySpec body;
+  std::vector<GarmentSpec> garments;
+  Material material;
+  SolverParams solver;
+  std::string collider = "is-cpu";
+  ColliderOptions collider_options;
+  /// Collider of the sew and drape phases when it should differ from `collider` (animation
+  /// tables dress once with it and measure `collider` on the animation only); "" = `collider`.
+  std::string dress_with;
+  StopRule stop;
+};
+
+/// Reads a scene file; `overrides` are "section.key=value" (TOML value syntax, bare words as
+/// strings; "garment.key" applies to every garment). Throws InputError naming file:line.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+/// As load_scene, from text (`name` is used in messages and to resolve relative paths).
+Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides = {});
+
+/// Resolves a body or pattern reference of a scene ("debian:human", "data:REL", scene-relative,
+/// or relative to the source tree's scenes/ folder) to a path.
+std::string resolve_scene_path(const Scene& scene, const std::string& ref);
+
+}  // namespace clothbench
