@@ -66,8 +66,8 @@ bool blend(const MapSet& m, int view, Real x, Real y, Vec3& normal, Vec3& veloci
     const std::size_t j = element(m, view, col + (k & 1), row + (k >> 1));
     if (m.mask[j] != MapSet::kBody) return false;
     const Real w = ((k & 1) ? a : 1 - a) * ((k >> 1) ? b : 1 - b);
-    n += w * m.normal_at(j);
-    vel += w * m.velocity_at(j);
+    n += w * m.raw_normal_at(j);
+    if (m.has_velocity) vel += w * m.velocity_at(j);
   }
   if (!(n.norm() > 0)) return false;
   normal = n.normalized();

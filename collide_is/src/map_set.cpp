@@ -53,15 +53,15 @@ void MapSet::reset(const MapFrame& new_frame, bool floats, bool with_velocity, R
   velocity8.resize(!floats && with_velocity ? 8 * n : 0);
 }
 
+Vec3 MapSet::raw_normal_at(std::size_t i) const {
+  if (float_maps) return Vec3(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2]);
+  // dressing Eq. 7: n = 2 (R, G, B) - 1
+  const std::uint8_t* c = &normal8[4 * i];
+  return Vec3(c[0], c[1], c[2]) * (2.0f / 255.0f) - Vec3::Ones();
+}
+
 Vec3 MapSet::normal_at(std::size_t i) const {
-  Vec3 n;
-  if (float_maps) {
-    n = Vec3(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2]);
-  } else {
-    // dressing Eq. 7: n = 2 (R, G, B) - 1
-    const std::uint8_t* c = &normal8[4 * i];
-    n = Vec3(c[0], c[1], c[2]) * (2.0f / 255.0f) - Vec3::Ones();
-  }
+  const Vec3 n = raw_normal_at(i);
   const Real len = n.norm();
   return len > 0 ? Vec3(n / len) : Vec3::Zero();
 }

@@ -75,6 +75,8 @@ struct MapSet {
   }
   /// Unit normal at element i (dressing Eq. 7 for 8-bit maps); zero where the map is empty.
   Vec3 normal_at(std::size_t i) const;
+  /// The interpolated normal as stored at element i, not normalised (decoded by Eq. 7).
+  Vec3 raw_normal_at(std::size_t i) const;
   /// Body velocity at element i [m/s] (walking Eq. 10 for 8-bit maps); zero without velocity maps.
   Vec3 velocity_at(std::size_t i) const;
   /// Sizes every array for `frame` and the encoding, clearing z to +-inf and the mask to kEmpty.

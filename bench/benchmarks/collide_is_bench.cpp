@@ -1,0 +1,124 @@
+// Image-space collider costs: map rendering per frame (both views, depth + normal + velocity) for
+// both renderers, both encodings and three map sizes, and the query cost per point.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "clothbench/collide_is/image_space_collider.hpp"
+#include "clothbench/io/body_loader.hpp"
+#include "clothbench/io/data_root.hpp"
+
+namespace clothbench {
+namespace {
+
+// the walking body at t = 2 s (moving: velocity maps too), or Debian's static human
+struct BenchBody {
+  std::string path;
+  BodyFrame frame;
+};
+
+const BenchBody& bench_body() {
+  static const BenchBody body = [] {
+    const std::string walk = data_path("body/mh_female_walk.glb");
+    if (std::filesystem::exists(walk)) {
+      const BodyModel m = load_body(walk);
+      return BenchBody{walk, m.frame(m.animation_index("walk_07_01"), 2.0)};
+    }
+    return BenchBody{kDebianHumanBody, load_body(kDebianHumanBody).rest()};
+  }();
+  return body;
+}
+
+std::unique_ptr<MapRenderer> make_renderer(const std::string& name) {
+  return name == "gl" ? make_gl_map_renderer() : make_cpu_map_renderer();
+}
+
+// one frame's maps as update_body renders them: reset, both views, side layer
+void bm_render(benchmark::State& state, const std::string& renderer, bool float_maps, int size) {
+  ColliderOptions o;
+  o.map_size = size;
+  o.float_maps = float_maps;
+  std::unique_ptr<Collider> c;
+  try {
+    c = std::make_unique<ImageSpaceCollider>(make_renderer(renderer), o, 0.0);
+    c->set_body(bench_body().frame);  // warm-up: first frame compiles shaders
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  for (auto _ : state) c->update_body(bench_body().frame);
+  const CollideStats s = c->stats();
+  state.counters["update_ms"] = s.update_ms / static_cast<double>(s.updates);
+  state.counters["setup_ms"] = s.setup_ms;
+  state.counters["body_triangles"] = bench_body().frame.triangle_count();
+}
+
+// 10,000 points within 3 cm of the surface (fixed seed) queried in one batch
+Points3 near_surface_points(const BodyFrame& body, int count) {
+  std::mt19937 rng(4242);
+  std::uniform_int_distribution<int> tri(0, body.triangle_count() - 1);
+  std::uniform_real_distribution<Real> unit(0, 1), offset(-0.03f, 0.03f);
+  Points3 p(3, count);
+  for (int i = 0; i < count; ++i) {
+    const int t = tri(rng);
+    const Vec3 a = body.positions.col(body.triangles(0, t)), b = body.positions.col(body.triangles(1, t)),
+               c = body.positions.col(body.triangles(2, t));
+    const Real r1 = std::sqrt(unit(rng)), r2 = unit(rng);
+    p.col(i) = (1 - r1) * a + r1 * (1 - r2) * b + r1 * r2 * c + offset(rng) * (b - a).cross(c - a).normalized();
+  }
+  return p;
+}
+
+void bm_query(benchmark::State& state, bool float_maps, DepthTest test) {
+  ColliderOptions o;
+  o.float_maps = float_maps;
+  ImageSpaceCollider c(make_cpu_map_renderer(), o, 0.0, test);
+  c.set_body(bench_body().frame);
+  const Points3 points = near_surface_points(bench_body().frame, 10000);
+  std::vector<Contact> out(static_cast<std::size_t>(points.cols()));
+  for (auto _ : state) {
+    c.query(PointsView(points), ContactsOut{out.data(), out.size()});
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * points.cols());
+  state.counters["time_per_point"] =
+      benchmark::Counter(static_cast<double>(points.cols()), benchmark::Counter::kIsIterationInvariantRate |
+                                                                 benchmark::Counter::kInvert);
+  state.counters["hit_pct"] = 100.0 * static_cast<double>(c.stats().hits) / static_cast<double>(c.stats().points);
+}
+
+void register_all() {
+  for (const std::string renderer : {"gl", "cpu"})
+    for (const bool float_maps : {true, false})
+      for (const int size : {320, 512, 1024})
+        benchmark::RegisterBenchmark(
+            ("render/" + renderer + "/" + (float_maps ? "float" : "8bit") + "/" + std::to_string(size)).c_str(),
+            [=](benchmark::State& s) { bm_render(s, renderer, float_maps, size); })
+            ->Unit(benchmark::kMillisecond);
+  for (const bool float_maps : {true, false})
+    for (const DepthTest test : {DepthTest::kPapers, DepthTest::kTangentPlane})
+      benchmark::RegisterBenchmark(("query/" + std::string(float_maps ? "float" : "8bit") + "/" +
+                                    (test == DepthTest::kPapers ? "papers_z" : "tangent_plane") + "/10000pts")
+                                       .c_str(),
+                                   [=](benchmark::State& s) { bm_query(s, float_maps, test); })
+          ->Unit(benchmark::kMicrosecond);
+}
+
+}  // namespace
+}  // namespace clothbench
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::AddCustomContext("body", clothbench::bench_body().path);
+  benchmark::AddCustomContext("body_triangles", std::to_string(clothbench::bench_body().frame.triangle_count()));
+  clothbench::register_all();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
