@@ -1,6 +1,7 @@
 #include "clothbench/collide_os/embree_collider.hpp"
 
 #include <algorithm>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -82,7 +83,11 @@ void EmbreeCollider::query(PointsView points, ContactsOut out) {
   std::vector<std::thread> pool;
   for (std::size_t w = 1; w < workers; ++w) {
     const std::size_t begin = std::min(points.count, w * chunk), end = std::min(points.count, begin + chunk);
-    pool.emplace_back([&, w, begin, end] { counts[w] = impl_->answer(points, out, begin, end); });
+    try {
+      pool.emplace_back([&, w, begin, end] { counts[w] = impl_->answer(points, out, begin, end); });
+    } catch (const std::system_error&) {  // no thread to be had: answer this chunk here
+      counts[w] = impl_->answer(points, out, begin, end);
+    }
   }
   counts[0] = impl_->answer(points, out, 0, std::min(points.count, chunk));
   for (auto& t : pool) t.join();
