@@ -86,9 +86,8 @@ void bm_query(benchmark::State& state, bool float_maps, DepthTest test) {
     benchmark::DoNotOptimize(out.data());
   }
   state.SetItemsProcessed(state.iterations() * points.cols());
-  state.counters["time_per_point"] =
-      benchmark::Counter(static_cast<double>(points.cols()), benchmark::Counter::kIsIterationInvariantRate |
-                                                                 benchmark::Counter::kInvert);
+  state.counters["time_per_point"] = benchmark::Counter(
+      static_cast<double>(points.cols()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["hit_pct"] = 100.0 * static_cast<double>(c.stats().hits) / static_cast<double>(c.stats().points);
 }
 

@@ -33,12 +33,15 @@ Rgb depth_colour(const MapSet& m, int view, std::size_t i) {
   if (m.mask[i] == MapSet::kEmpty) return {255, 255, 255};
   if (m.mask[i] == MapSet::kSide) return {220, 30, 30};
   const MapFrame& f = m.frame;
-  const double zbuf = view == MapSet::kFront ? (f.z_max - m.z[i]) / f.depth_range() : (m.z[i] - f.z_min) / f.depth_range();
+  const double zbuf =
+      view == MapSet::kFront ? (f.z_max - m.z[i]) / f.depth_range() : (m.z[i] - f.z_min) / f.depth_range();
   return colormap(zbuf);
 }
 
 Rgb vector_colour(const Vec3& unit_range) {
-  const auto c = [](Real x) { return static_cast<std::uint8_t>(std::clamp(0.5f * x + 0.5f, 0.0f, 1.0f) * 255.0f + 0.5f); };
+  const auto c = [](Real x) {
+    return static_cast<std::uint8_t>(std::clamp(0.5f * x + 0.5f, 0.0f, 1.0f) * 255.0f + 0.5f);
+  };
   return {c(unit_range.x()), c(unit_range.y()), c(unit_range.z())};
 }
 
@@ -77,8 +80,9 @@ int run_maps(const MapsArgs& a) {
     covered += k == MapSet::kBody;
     side += k == MapSet::kSide;
   }
-  std::cout << a.body << ": " << a.renderer << " maps " << a.size << "^2 in " << watch.ms() << " ms (incl. set-up), pixel "
-            << m.frame.pixel * 1000 << " mm, body pixels " << covered << ", side layer " << side << "\n";
+  std::cout << a.body << ": " << a.renderer << " maps " << a.size << "^2 in " << watch.ms()
+            << " ms (incl. set-up), pixel " << m.frame.pixel * 1000 << " mm, body pixels " << covered << ", side layer "
+            << side << "\n";
   // the pictures
   std::filesystem::create_directories(a.png_dir);
   const std::string base = (std::filesystem::path(a.png_dir) / stem).string();

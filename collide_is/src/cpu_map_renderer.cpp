@@ -16,8 +16,8 @@ constexpr float kSubpixel = 1 << kSubpixelBits;
 
 // one projected vertex of one view
 struct WindowVertex {
-  float x, y;          // window coordinates [pixels], origin at the lower-left corner
-  std::int64_t fx, fy; // snapped, shifted so pixel centres lie on integers (fixed point)
+  float x, y;           // window coordinates [pixels], origin at the lower-left corner
+  std::int64_t fx, fy;  // snapped, shifted so pixel centres lie on integers (fixed point)
 };
 
 // attributes interpolated over a triangle: world z, normal xyz, velocity xyz
@@ -172,7 +172,9 @@ class CpuMapRenderer final : public MapRenderer {
       return;
     }
     // 8-bit colours: dressing Eq. 6 and walking Eq. 9, unorm rounding as GL
-    const auto unorm = [](float c) { return static_cast<std::uint8_t>(std::lrint(std::clamp(c, 0.0f, 1.0f) * 255.0f)); };
+    const auto unorm = [](float c) {
+      return static_cast<std::uint8_t>(std::lrint(std::clamp(c, 0.0f, 1.0f) * 255.0f));
+    };
     std::uint8_t* n = &maps.normal8[4 * i];
     for (int k = 0; k < 3; ++k) n[k] = unorm(0.5f * nv[k] + 0.5f);
     n[3] = 255;

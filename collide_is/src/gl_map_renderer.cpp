@@ -89,11 +89,45 @@ class GlMapRenderer final : public MapRenderer {
  public:
   GlMapRenderer() : client_(4 * kClientSide * kClientSide) {
     // context (core profile 3.3) made current on its own small client buffer
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+    // clang-format off
+    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
+                              OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                               OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    // clang-format on
     ctx_ = OSMesaCreateContextAttribs(attributes, nullptr);
     if (!ctx_) throw std::runtime_error("is-gl: no OpenGL context: OSMesaCreateContextAttribs (core 3.3) failed");
+    try {
+      set_up();
+    } catch (...) {
+      OSMesaDestroyContext(ctx_);
+      throw;
+    }
+  }
+
+  ~GlMapRenderer() override {
     make_current();
+    release_targets();
+    glDeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
+    glDeleteVertexArrays(1, &vao_);
+    glDeleteProgram(program_);
+    OSMesaDestroyContext(ctx_);
+  }
+
+  std::string_view name() const override { return "gl"; }
+
+  void render(const BodyFrame& body, MapSet& maps) override {
+    make_current();
+    targets(maps);
+    upload(body, maps.has_velocity);
+    draw(body, maps);
+    read_back(maps);
+  }
+
+ private:
+  // shaders, uniforms and vertex arrays in the new context
+  void set_up() {
+    if (!OSMesaMakeCurrent(ctx_, client_.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide))
+      throw std::runtime_error("is-gl: OSMesaMakeCurrent failed");
     // shaders and their uniforms
     const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
     const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
@@ -117,29 +151,7 @@ class GlMapRenderer final : public MapRenderer {
     if (glGetError() != GL_NO_ERROR) throw std::runtime_error("is-gl: OpenGL set-up failed");
   }
 
-  ~GlMapRenderer() override {
-    make_current();
-    release_targets();
-    glDeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
-    glDeleteVertexArrays(1, &vao_);
-    glDeleteProgram(program_);
-    OSMesaDestroyContext(ctx_);
-  }
-
-  std::string_view name() const override { return "gl"; }
-
-  void render(const BodyFrame& body, MapSet& maps) override {
-    make_current();
-    targets(maps);
-    upload(body, maps.has_velocity);
-    draw(body, maps);
-    read_back(maps);
-  }
-
- private:
-  void make_current() {
-    OSMesaMakeCurrent(ctx_, client_.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide);
-  }
+  void make_current() { OSMesaMakeCurrent(ctx_, client_.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide); }
 
   // (re)creates the FBO when size or encoding changed: size x 2 size, front below back
   void targets(const MapSet& maps) {

@@ -136,8 +136,7 @@ MapSet render_maps(const BodyFrame& body, std::string_view renderer, const Colli
     throw std::invalid_argument("render_maps: unknown renderer '" + std::string(renderer) + "' (gl, cpu)");
   }
   MapSet maps;
-  maps.reset(make_map_frame(bounding_box(body.positions), options), options.float_maps, body.moving,
-             options.max_speed);
+  maps.reset(make_map_frame(bounding_box(body.positions), options), options.float_maps, body.moving, options.max_speed);
   r->render(body, maps);
   if (options.side_layer) add_side_layer(maps);
   return maps;

@@ -21,9 +21,9 @@ namespace {
 
 // the points of the accuracy tests: near the surface, with the exact answer for each
 struct Sample {
-  Points3 points;                 // query points [m] (3 x n)
-  std::vector<Contact> exact;     // closest point + pseudo-normal sign (brute force)
-  std::vector<Real> normal_z;     // z of the exact closest feature's unit pseudo-normal
+  Points3 points;              // query points [m] (3 x n)
+  std::vector<Contact> exact;  // closest point + pseudo-normal sign (brute force)
+  std::vector<Real> normal_z;  // z of the exact closest feature's unit pseudo-normal
 };
 
 // triangles bucketed by bounding box on a uniform grid of cell `band`: the exact closest point of
@@ -186,8 +186,8 @@ struct Region {
   long points = 0, false_hits = 0, misses = 0;
 };
 struct Report {
-  Region away[3], near[3], hidden[3];  // front (n_z >= 0.5), back (n_z <= -0.5), sides
-  std::vector<double> normal_deg;    // exact contacts within tol of the surface, away
+  Region away[3], near[3], hidden[3];   // front (n_z >= 0.5), back (n_z <= -0.5), sides
+  std::vector<double> normal_deg;       // exact contacts within tol of the surface, away
   std::vector<double> normal_deg_deep;  // exact contacts deeper than tol, away
   std::vector<Contact> contacts;
   long away_points() const { return away[0].points + away[1].points + away[2].points; }
@@ -222,7 +222,8 @@ Report evaluate(Collider& collider, const BodyFrame& body, const Sample& s, cons
   const auto cells = [](const Region& g) {
     return std::to_string(g.points) + " " + std::to_string(g.false_hits) + " " + std::to_string(g.misses);
   };
-  std::cout << "[ " << collider.name() << " ] region: points false-hits misses, away | near silhouette | hidden layer\n";
+  std::cout << "[ " << collider.name()
+            << " ] region: points false-hits misses, away | near silhouette | hidden layer\n";
   for (int k = 0; k < 3; ++k)
     std::cout << "[ " << collider.name() << " ] " << std::setw(6) << names[k] << ": " << cells(r.away[k]) << " | "
               << cells(r.near[k]) << " | " << cells(r.hidden[k]) << "\n";
@@ -237,7 +238,9 @@ double quantile(std::vector<double> v, double q) {
 }
 
 double fraction_below(const std::vector<double>& v, double limit) {
-  return v.empty() ? 0.0 : static_cast<double>(std::count_if(v.begin(), v.end(), [&](double x) { return x <= limit; })) / v.size();
+  return v.empty()
+             ? 0.0
+             : static_cast<double>(std::count_if(v.begin(), v.end(), [&](double x) { return x <= limit; })) / v.size();
 }
 
 // 10,000 points within 3 cm of the test body, fixed seed, exact answers by brute force
@@ -314,6 +317,14 @@ TEST_F(ImageSpaceAccuracy, GlMapsAgreeWithExactGeometryAndWithCpu) {
   EXPECT_EQ(st.points, static_cast<std::int64_t>(a.contacts.size()));
 }
 
+TEST_F(ImageSpaceAccuracy, FittedExtentAndLargerMapsAgreeToo) {
+  ColliderOptions o;
+  o.fit_extent = true;
+  o.map_size = 512;
+  auto c = make_is_cpu_collider(o);
+  expect_accurate(*c, "fitted 512^2 maps");
+}
+
 TEST_F(ImageSpaceAccuracy, PapersDepthTestAlongZAgreesLessOften) {
   // the papers' comparison along z alone misses points within tol of sloped surfaces
   ImageSpaceCollider papers(make_cpu_map_renderer(), ColliderOptions{}, 0.0, DepthTest::kPapers);
@@ -354,7 +365,8 @@ TEST(ImageSpaceCollider, WalkingFrameVelocityMatchesTheSkinnedMotion) {
   std::vector<double> of_max, of_own;
   for (std::size_t i = 0; i < s.exact.size(); ++i) {
     const Contact &e = s.exact[i], &g = r.contacts[i];
-    if (!e.hit || !g.hit || e.depth <= -ColliderOptions{}.tol || sil.near(s.points.col(i)) || sil.hidden(s.points.col(i)))
+    if (!e.hit || !g.hit || e.depth <= -ColliderOptions{}.tol || sil.near(s.points.col(i)) ||
+        sil.hidden(s.points.col(i)))
       continue;
     const double err = (g.body_velocity - e.body_velocity).norm();
     of_max.push_back(err / vmax);
@@ -374,10 +386,10 @@ TEST(ImageSpaceCollider, SphereContactsAlongTheAxes) {
   const Real r = 0.3f;
   c->set_body(make_sphere_body(Vec3(0, 0.5f, 0), r, 64, 128));
   Points3 p(3, 4);
-  p.col(0) = Vec3(0.0f, 0.5f, r - 0.01f);   // inside, 1 cm under the front pole
+  p.col(0) = Vec3(0.0f, 0.5f, r - 0.01f);    // inside, 1 cm under the front pole
   p.col(1) = Vec3(0.0f, 0.5f, -r - 0.003f);  // outside the back pole, within tol
-  p.col(2) = Vec3(0.0f, 0.5f, r + 0.02f);   // outside, beyond tol
-  p.col(3) = Vec3(0.0f, 0.5f, 0.0f);        // centre: 30 cm deep
+  p.col(2) = Vec3(0.0f, 0.5f, r + 0.02f);    // outside, beyond tol
+  p.col(3) = Vec3(0.0f, 0.5f, 0.0f);         // centre: 30 cm deep
   std::vector<Contact> out(4);
   c->query(PointsView(p), ContactsOut{out.data(), out.size()});
   ASSERT_TRUE(out[0].hit);
@@ -407,8 +419,7 @@ TEST(ImageSpaceCollider, NanPointsAreDegenerateMisses) {
   EXPECT_EQ(c->stats().hits, 1);
 }
 
-TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocities) {
-  auto c = make_is_cpu_collider(ColliderOptions{});
+void expect_re_rendered_with_velocities(Collider* c) {
   BodyFrame s = make_sphere_body(Vec3(0, 0.5f, 0), 0.3f);
   c->set_body(s);
   // the sphere moves 5 cm along +x at 1 m/s
@@ -427,6 +438,30 @@ TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocities) {
   EXPECT_EQ(c->stats().updates, 1);
   BodyFrame other = make_sphere_body(Vec3::Zero(), 0.3f, 8, 8);
   EXPECT_THROW(c->update_body(other), std::invalid_argument);
+  EXPECT_GE(c->stats().update_ms, 0.0);
+}
+
+TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocities) {
+  expect_re_rendered_with_velocities(make_is_cpu_collider(ColliderOptions{}).get());
+}
+
+TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocitiesByGl) {
+  CLOTHBENCH_REQUIRE_GL();
+  ColliderOptions eight;
+  eight.float_maps = false;
+  expect_re_rendered_with_velocities(make_is_gl_collider(ColliderOptions{}).get());
+  // 8-bit velocity: within one step of maxv * 2 / 255 (walking Eq. 10)
+  auto c = make_is_gl_collider(eight);
+  BodyFrame s = make_sphere_body(Vec3(0, 0.5f, 0), 0.3f);
+  s.moving = true;
+  for (int v = 0; v < s.vertex_count(); ++v) s.velocities.col(v) = Vec3(1.0f, 0.0f, -0.5f);
+  c->set_body(s);
+  Points3 p(3, 1);
+  p.col(0) = Vec3(0.0f, 0.5f, 0.29f);
+  std::vector<Contact> out(1);
+  c->query(PointsView(p), ContactsOut{out.data(), out.size()});
+  ASSERT_TRUE(out[0].hit);
+  EXPECT_TRUE(test::near_vec(out[0].body_velocity, Vec3(1, 0, -0.5f), eight.max_speed * 2.0 / 255));
 }
 
 TEST(ImageSpaceCollider, GlFactoryNamesItself) {

@@ -43,8 +43,8 @@ inline std::string gl_unavailable() {
 }  // namespace clothbench::test
 
 /// Skips the current test, with the reason, when no OpenGL context can be created.
-#define CLOTHBENCH_REQUIRE_GL()                                                  \
-  do {                                                                           \
-    if (!::clothbench::test::gl_unavailable().empty())                           \
+#define CLOTHBENCH_REQUIRE_GL()                                                      \
+  do {                                                                               \
+    if (!::clothbench::test::gl_unavailable().empty())                               \
       GTEST_SKIP() << "no OpenGL context: " << ::clothbench::test::gl_unavailable(); \
   } while (0)

@@ -17,8 +17,8 @@ namespace {
 struct MapDiff {
   long coverage_mismatch = 0;
   long covered = 0;
-  double depth_max = 0;   // [m]
-  double depth_p999 = 0;  // [m]
+  double depth_max = 0;         // [m]
+  double depth_p999 = 0;        // [m]
   double depth_max_facing = 0;  // [m], where the surface faces the camera within 60 degrees
 };
 

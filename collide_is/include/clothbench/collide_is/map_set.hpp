@@ -23,12 +23,12 @@ namespace clothbench {
 /// Depth (z-buffer) runs 0 at the near plane to 1 at the far plane:
 ///   front: zbuf = (z_max - z) / (z_max - z_min),  back: zbuf = (z - z_min) / (z_max - z_min).
 struct MapFrame {
-  int size = 0;       ///< pixels per side of each square map
-  Real x0 = 0;        ///< world x of the map's left edge (front view) [m]
-  Real y0 = 0;        ///< world y of the map's bottom edge [m]
-  Real pixel = 0;     ///< side of one pixel [m] (dressing Eq. 11)
-  Real z_min = 0;     ///< back camera's near plane = front camera's far plane [m]
-  Real z_max = 0;     ///< front camera's near plane = back camera's far plane [m]
+  int size = 0;    ///< pixels per side of each square map
+  Real x0 = 0;     ///< world x of the map's left edge (front view) [m]
+  Real y0 = 0;     ///< world y of the map's bottom edge [m]
+  Real pixel = 0;  ///< side of one pixel [m] (dressing Eq. 11)
+  Real z_min = 0;  ///< back camera's near plane = front camera's far plane [m]
+  Real z_max = 0;  ///< front camera's near plane = back camera's far plane [m]
 
   /// Continuous front-view column of world x [pixels].
   Real front_u(Real x) const { return (x - x0) / pixel; }
@@ -56,15 +56,15 @@ struct MapSet {
   static constexpr std::uint8_t kBody = 1;   ///< the body covers the pixel centre
   static constexpr std::uint8_t kSide = 2;   ///< the extra silhouette layer (dressing 5.4)
 
-  MapFrame frame;            ///< the cameras
-  bool float_maps = true;    ///< float normal/velocity (true) or 8-bit colours (dressing Eq. 6, walking Eq. 9)
-  bool has_velocity = false; ///< velocity maps were rendered (moving bodies only)
-  Real max_speed = 3;        ///< maxv of the 8-bit velocity encoding [m/s] (walking Eq. 9/10)
-  std::vector<float> z;      ///< body surface z [m] (2 x size^2); -inf (front) / +inf (back) where empty
-  std::vector<std::uint8_t> mask;  ///< kEmpty, kBody or kSide (2 x size^2)
-  std::vector<float> normal;       ///< float maps: interpolated normal xyz + 1 (4 x 2 x size^2)
-  std::vector<float> velocity;     ///< float maps with velocity: xyz + 1 [m/s] (4 x 2 x size^2)
-  std::vector<std::uint8_t> normal8;    ///< 8-bit maps: RGBA, RGB = 0.5 n + 0.5 (dressing Eq. 6)
+  MapFrame frame;                     ///< the cameras
+  bool float_maps = true;             ///< float normal/velocity (true) or 8-bit colours (dressing Eq. 6, walking Eq. 9)
+  bool has_velocity = false;          ///< velocity maps were rendered (moving bodies only)
+  Real max_speed = 3;                 ///< maxv of the 8-bit velocity encoding [m/s] (walking Eq. 9/10)
+  std::vector<float> z;               ///< body surface z [m] (2 x size^2); -inf (front) / +inf (back) where empty
+  std::vector<std::uint8_t> mask;     ///< kEmpty, kBody or kSide (2 x size^2)
+  std::vector<float> normal;          ///< float maps: interpolated normal xyz + 1 (4 x 2 x size^2)
+  std::vector<float> velocity;        ///< float maps with velocity: xyz + 1 [m/s] (4 x 2 x size^2)
+  std::vector<std::uint8_t> normal8;  ///< 8-bit maps: RGBA, RGB = 0.5 n + 0.5 (dressing Eq. 6)
   std::vector<std::uint8_t> velocity8;  ///< 8-bit maps: RGBA, RGB = 0.5 v / maxv + 0.5 (walking Eq. 9)
 
   /// Pixels per view.
