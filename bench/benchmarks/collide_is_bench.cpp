@@ -29,7 +29,10 @@ const BenchBody& bench_body() {
       const BodyModel m = load_body(walk);
       return BenchBody{walk, m.frame(m.animation_index("walk_07_01"), 2.0)};
     }
-    return BenchBody{kDebianHumanBody, load_body(kDebianHumanBody).rest()};
+    // static: flagged moving (zero velocities) so update_body renders every iteration
+    BodyFrame rest = load_body(kDebianHumanBody).rest();
+    rest.moving = true;
+    return BenchBody{kDebianHumanBody, rest};
   }();
   return body;
 }

@@ -1,4 +1,5 @@
-// The CPU rasteriser of the image-space maps: the same coverage and depths as llvmpipe.
+// The CPU rasteriser of the image-space maps: the same coverage as llvmpipe (vertices snapped to
+// 1/256 pixel, pixel-centre samples, top-left rule) and its depths within a few micrometres.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -20,11 +21,12 @@ struct WindowVertex {
   std::int64_t fx, fy;  // snapped, shifted so pixel centres lie on integers (fixed point)
 };
 
-// attributes interpolated over a triangle: world z, normal xyz, velocity xyz
+// attributes interpolated over a triangle: z-buffer depth of the view, normal xyz, velocity xyz
 constexpr int kAttributes = 7;
 using Attributes = std::array<float, kAttributes>;
 
-// a triangle's attribute planes in window coordinates: a(x, y) = a0 + dadx (x - x0) + dady (y - y0)
+// a triangle's attribute planes in window coordinates: a(x, y) = a0 + dadx (x - x0) + dady (y - y0);
+// depth as llvmpipe evaluates it, from its value at the sample origin: z_origin + dzdx col + dzdy row
 struct Planes {
   float x0, y0;
   Attributes a0, dadx, dady;
@@ -153,6 +155,7 @@ class CpuMapRenderer final : public MapRenderer {
   static void shade(MapSet& maps, int view, int col, int row, const Planes& p) {
     const float dx = static_cast<float>(col) + 0.5f - p.x0, dy = static_cast<float>(row) + 0.5f - p.y0;
     const float dorg = p.z_origin + p.dadx[0] * static_cast<float>(col) + p.dady[0] * static_cast<float>(row);
+    // z-buffer value to geometry space (dressing Eq. 5, tol applied at the query)
     const MapFrame& f = maps.frame;
     const float z = view == MapSet::kFront ? f.z_max - dorg * f.depth_range() : f.z_min + dorg * f.depth_range();
     const std::size_t i = maps.index(view, col, row);

@@ -40,10 +40,12 @@ void ImageSpaceCollider::update_body(const BodyFrame& body) {
   if (vertex_count_ == 0) throw std::logic_error(std::string(name()) + ": update_body before set_body");
   if (body.vertex_count() != vertex_count_)
     throw std::invalid_argument(std::string(name()) + ": update_body with a different vertex count");
+  ++stats_.updates;
+  // a static body keeps the maps of set_body
+  if (!body.moving && !maps_.has_velocity) return;
   Stopwatch watch;
   render(body);
   stats_.update_ms += watch.ms();
-  ++stats_.updates;
 }
 
 namespace {

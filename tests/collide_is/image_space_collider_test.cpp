@@ -405,6 +405,19 @@ TEST(ImageSpaceCollider, SphereContactsAlongTheAxes) {
   EXPECT_EQ(out[0].body_velocity, Vec3::Zero());
 }
 
+TEST(ImageSpaceCollider, StaticBodyIsRenderedOnceOnly) {
+  auto c = make_is_cpu_collider(ColliderOptions{});
+  BodyFrame s = make_sphere_body(Vec3(0, 0.5f, 0), 0.3f);
+  c->set_body(s);
+  const MapSet before = dynamic_cast<ImageSpaceCollider&>(*c).maps();
+  s.positions.row(0).array() += 0.1f;  // ignored: a static body does not move
+  c->update_body(s);
+  EXPECT_EQ(c->stats().updates, 1);
+  EXPECT_EQ(c->stats().update_ms, 0.0);
+  EXPECT_EQ(dynamic_cast<ImageSpaceCollider&>(*c).maps().z, before.z);
+  EXPECT_FALSE(dynamic_cast<ImageSpaceCollider&>(*c).maps().has_velocity);
+}
+
 TEST(ImageSpaceCollider, NanPointsAreDegenerateMisses) {
   auto c = make_is_cpu_collider(ColliderOptions{});
   c->set_body(make_sphere_body(Vec3(0, 0.5f, 0), 0.3f));

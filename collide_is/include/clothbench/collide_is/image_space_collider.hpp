@@ -22,7 +22,8 @@ enum class DepthTest {
 
 /// Image-space collider with maps drawn by OpenGL through OSMesa; name() "is-gl".
 /// Static bodies are rendered once in set_body, moving ones again in every update_body
-/// (velocity maps only when body.moving). Query per point (dressing Eq. 8/9, walking Eq. 11/12):
+/// (velocity maps only when body.moving; update_body of a static frame after static maps
+/// renders nothing). Query per point (dressing Eq. 8/9, walking Eq. 11/12):
 ///   (col, row) from world (x, y); zf, zb = front and back surface z at that pixel;
 ///   hit when the point lies between the two surfaces within tol (depth < tol, DepthTest);
 ///   normal and velocity from the map whose surface is nearer (z beyond the local body centre
