@@ -101,7 +101,7 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
   const std::size_t i = view == MapSet::kFront ? fi : bi;
   c.depth = depth_z;
   c.normal = maps_.normal_at(i);
-  c.body_velocity = maps_.velocity_at(i);
+  bool blended = false;
   if (plane) {
     // signed distance to the tangent plane at the pixel centre's surface point; points between
     // the surfaces stay inside (the plane distance never exceeds the distance along z)
@@ -115,8 +115,9 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
     }
     // normal and velocity at the foot of the perpendicular, blended over four pixel centres
     const Vec3 foot = p - d * c.normal;
-    blend(maps_, view, foot.x(), foot.y(), c.normal, c.body_velocity);
+    blended = blend(maps_, view, foot.x(), foot.y(), c.normal, c.body_velocity);
   }
+  if (!blended) c.body_velocity = maps_.velocity_at(i);
   // side-layer pixels stand for the tolerance band outside the silhouette (dressing 5.4)
   if (maps_.mask[i] == MapSet::kSide) c.depth = std::max(c.depth, 0.0f);
   c.hit = true;
