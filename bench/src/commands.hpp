@@ -12,6 +12,7 @@ using Action = std::function<int()>;
 void add_colliders_command(CLI::App& app, Action& action);
 void add_demo_command(CLI::App& app, Action& action);
 void add_maps_command(CLI::App& app, Action& action);
+void add_garment_command(CLI::App& app, Action& action);
 void add_body_command(CLI::App& app, Action& action);
 
 }  // namespace clothbench::cli

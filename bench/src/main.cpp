@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   clothbench::cli::add_colliders_command(app, action);
   clothbench::cli::add_demo_command(app, action);
   clothbench::cli::add_maps_command(app, action);
+  clothbench::cli::add_garment_command(app, action);
   clothbench::cli::add_body_command(app, action);
   try {
     app.parse(argc, argv);

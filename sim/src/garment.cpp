@@ -208,7 +208,8 @@ std::vector<std::array<int, 2>> match_runs(const std::vector<std::pair<double, i
 
 Eigen::Matrix3f placement_rotation(const Placement& pl) {
   const float d2r = static_cast<float>(M_PI / 180.0);
-  return (Eigen::AngleAxisf(pl.yaw_deg * d2r, Vec3::UnitY()) * Eigen::AngleAxisf(pl.roll_deg * d2r, Vec3::UnitZ()))
+  return (Eigen::AngleAxisf(pl.yaw_deg * d2r, Vec3::UnitY()) * Eigen::AngleAxisf(pl.roll_deg * d2r, Vec3::UnitZ()) *
+          Eigen::AngleAxisf(pl.pitch_deg * d2r, Vec3::UnitX()))
       .toRotationMatrix();
 }
 
@@ -307,13 +308,19 @@ MeshedPattern mesh_pattern(const Pattern& pat, const MeshingOptions& o) {
   if (o.spacing_cm > 0) return mesh_pattern(pat, o.spacing_cm, o.attach);
   if (o.target_vertices < 8) throw std::invalid_argument("pattern " + pat.name + ": need a spacing or >= 8 target vertices");
   // area / spacing^2 ~ vertices: start there, then search the spacing on a log scale
+  // (each panel's area counts positive, whichever way its outline turns)
   double area = 0;
-  for (const auto& p : pat.panels)
-    for (std::size_t i = 0; i < p.outline.size(); ++i) area += 0.5 * cross(p.outline[i], p.outline[(i + 1) % p.outline.size()]);
-  const double h0 = std::sqrt(std::abs(area) / o.target_vertices);
+  for (const auto& p : pat.panels) {
+    double a = 0;
+    for (std::size_t i = 0; i < p.outline.size(); ++i) a += 0.5 * cross(p.outline[i], p.outline[(i + 1) % p.outline.size()]);
+    area += std::abs(a);
+  }
+  const double h0 = std::sqrt(area / o.target_vertices);
   MeshedPattern best;
   double best_err = 1e300;
-  for (int k = -40; k <= 40; ++k) {
+  // nearest spacings first: 0, +1, -1, +2, ... steps of 1 %
+  for (int i = 0; i <= 80; ++i) {
+    const int k = i % 2 ? (i + 1) / 2 : -i / 2;
     const double h = h0 * std::pow(1.01, k);
     MeshedPattern m = mesh_pattern(pat, h, o.attach);
     const double err = std::abs(m.mesh.vertex_count() - o.target_vertices);

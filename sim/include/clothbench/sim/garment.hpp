@@ -15,7 +15,8 @@ using Vec2d = Eigen::Vector2d;  ///< a pattern point [cm]
 
 /// Where a panel goes around the body. The panel's 2D frame (u right, v up, in cm) is laid in the
 /// body's XY plane facing +Z, optionally wrapped around a vertical axis `wrap_radius_cm` behind it,
-/// then rotated by `roll_deg` about +Z (limb tilt, positive turns +Y towards -X) and `yaw_deg` about +Y
+/// then rotated by `pitch_deg` about +X (positive turns +Y towards +Z; 90 lays a panel flat, e.g. a
+/// tablecloth), `roll_deg` about +Z (limb tilt, positive turns +Y towards -X) and `yaw_deg` about +Y
 /// (180 = a back panel facing -Z), and finally moved so that the pattern origin (0, 0) lands at
 /// the landmark `anchor` (fractions of the body's bounding box, 0..1 per axis) plus `offset_cm`.
 struct Placement {
@@ -23,6 +24,7 @@ struct Placement {
   Vec3 offset_cm = Vec3::Zero();         ///< added after the anchor [cm]
   Real yaw_deg = 0;                      ///< rotation about +Y [deg]
   Real roll_deg = 0;                     ///< rotation about +Z [deg], applied before yaw
+  Real pitch_deg = 0;                    ///< rotation about +X [deg], applied before roll
   Real wrap_radius_cm = 0;               ///< 0 = flat; > 0 wraps the panel around a vertical axis [cm]
 };
 
