@@ -342,8 +342,8 @@ class Converter {
         fail(ep, "edges of panel '" + name + "' do not form a loop: edge " + std::to_string(e) + " starts at vertex " +
                      std::to_string(ab[0]) + ", edge " + std::to_string(e - 1) + " ended at " + std::to_string(ends.back()[1]));
       ends.push_back(ab);
-      p.edge_begin.push_back(static_cast<int>(p.outline.size()));
       if (e == 0) p.outline.push_back(verts[static_cast<std::size_t>(ab[0])]);
+      p.edge_begin.push_back(static_cast<int>(p.outline.size()) - 1);
       auto pts = edge_points(ej, ep, verts[static_cast<std::size_t>(ab[0])], verts[static_cast<std::size_t>(ab[1])]);
       if (e + 1 == es.size()) pts.pop_back();  // the loop's end is its start
       p.outline.insert(p.outline.end(), pts.begin(), pts.end());
