@@ -202,10 +202,12 @@ class GlMapRenderer final : public MapRenderer {
                  body.triangles.data(), GL_STREAM_DRAW);
   }
 
-  // both views, depth test keeping the surface nearest each camera
+  // both views, depth test keeping the surface nearest each camera; both targets always bound so
+  // a moving frame after a static one needs no new shader variant (a static body's velocity
+  // target gets zeros and is not read back)
   void draw(const BodyFrame& body, const MapSet& maps) {
     const std::array<GLenum, 2> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(maps.has_velocity ? 2 : 1, buffers.data());
+    glDrawBuffers(2, buffers.data());
     glClearColor(0, 0, 0, 0);
     glClearDepth(1.0);
     glDisable(GL_SCISSOR_TEST);
