@@ -184,5 +184,23 @@ TEST(GlMaps, SameAsCpuOnTheBody) {
   expect_same_maps(model.rest(), big, model.path().c_str());
 }
 
+TEST(GlMaps, SameAsCpuOnAWalkingFrameVelocitiesIncluded) {
+  CLOTHBENCH_REQUIRE_GL();
+  if (test::walking_body_path().empty()) GTEST_SKIP() << "no walking body in the data root (" << data_root() << ")";
+  const BodyModel& model = test::test_body_model();
+  const BodyFrame body = model.frame(model.animation_index("walk_07_01"), 2.0);
+  expect_same_maps(body, no_side_layer(), "walk_07_01 t=2 s");
+  const MapSet gl = render_maps(body, "gl", no_side_layer());
+  const MapSet cpu = render_maps(body, "cpu", no_side_layer());
+  ASSERT_TRUE(gl.has_velocity && cpu.has_velocity);
+  // velocity where the surface faces the camera: the same interpolation in float
+  double worst = 0;
+  for (std::size_t i = 0; i < gl.mask.size(); ++i)
+    if (gl.mask[i] == MapSet::kBody && std::abs(cpu.normal_at(i).z()) >= 0.5)
+      worst = std::max(worst, static_cast<double>((gl.velocity_at(i) - cpu.velocity_at(i)).norm()));
+  std::cout << "[ maps ] walk_07_01 t=2 s: velocity |gl-cpu| max " << worst * 1000 << " mm/s\n";
+  EXPECT_LT(worst, 1e-3);
+}
+
 }  // namespace
 }  // namespace clothbench
