@@ -80,7 +80,10 @@ class Parser {
       statement(l.words);
     }
     line_ = last_line_;
-    if (current_) fail("panel '" + current_->panel.name + "' (line " + std::to_string(current_->line) + ") has no 'end'");
+    if (current_) {
+      line_ = current_->line;
+      fail("panel '" + current_->panel.name + "' has no 'end'");
+    }
     if (drafts_.empty()) fail("empty pattern: no panels");
     for (const auto& d : drafts_) pattern_.panels.push_back(d.panel);
     resolve_seams();
@@ -102,6 +105,7 @@ class Parser {
     int number = 1;
     std::size_t begin = 0;
     while (begin <= text_.size()) {
+      if (begin == text_.size() && number > 1) break;  // no line after the final newline
       std::size_t end = text_.find('\n', begin);
       if (end == std::string_view::npos) end = text_.size();
       line_ = number;
