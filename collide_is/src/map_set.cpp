@@ -88,38 +88,30 @@ void copy_pixel(MapSet& m, std::size_t from, std::size_t to) {
   }
 }
 
-// the covered 8-neighbour of (col, row) nearest to the camera, or -1
-long nearest_body_neighbour(const MapSet& m, int view, int col, int row) {
-  const int n = m.frame.size;
-  long best = -1;
-  for (int dr = -1; dr <= 1; ++dr) {
-    for (int dc = -1; dc <= 1; ++dc) {
-      const int c = col + dc, r = row + dr;
-      if ((dc == 0 && dr == 0) || c < 0 || r < 0 || c >= n || r >= n) continue;
-      const std::size_t j = m.index(view, c, r);
-      if (m.mask[j] != MapSet::kBody) continue;
-      // front camera: nearest is the largest z; back camera: the smallest
-      const bool nearer = best < 0 || (view == MapSet::kFront ? m.z[j] > m.z[best] : m.z[j] < m.z[best]);
-      if (nearer) best = static_cast<long>(j);
-    }
-  }
-  return best;
-}
-
 }  // namespace
 
 void add_side_layer(MapSet& maps) {
   const int n = maps.frame.size;
   for (int view = 0; view < 2; ++view) {
+    // front camera: nearer is the larger z; back camera: the smaller
+    const auto nearer = [view](float a, float b) { return view == MapSet::kFront ? a > b : a < b; };
     for (int row = 0; row < n; ++row) {
       for (int col = 0; col < n; ++col) {
         const std::size_t i = maps.index(view, col, row);
-        if (maps.mask[i] != MapSet::kEmpty) continue;
-        // dressing 5.4: one layer of pixels around the silhouette stands for tol at the sides
-        const long from = nearest_body_neighbour(maps, view, col, row);
-        if (from < 0) continue;
-        copy_pixel(maps, static_cast<std::size_t>(from), i);
-        maps.mask[i] = MapSet::kSide;
+        if (maps.mask[i] != MapSet::kBody) continue;
+        // dressing 5.4: each empty 8-neighbour joins the layer with the nearest body pixel's values
+        for (int dr = -1; dr <= 1; ++dr) {
+          for (int dc = -1; dc <= 1; ++dc) {
+            const int c = col + dc, r = row + dr;
+            if (c < 0 || r < 0 || c >= n || r >= n) continue;
+            const std::size_t j = maps.index(view, c, r);
+            const bool take =
+                maps.mask[j] == MapSet::kEmpty || (maps.mask[j] == MapSet::kSide && nearer(maps.z[i], maps.z[j]));
+            if (!take) continue;
+            copy_pixel(maps, i, j);
+            maps.mask[j] = MapSet::kSide;
+          }
+        }
       }
     }
   }
