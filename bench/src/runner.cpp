@@ -40,15 +40,17 @@ class BodySource {
     if (spec_.animation.empty()) return;
     anim_ = model_->animation_index(spec_.animation);
     const double clip = model_->animations()[anim_].duration_s;
+    dress_ = spec_.dress_at_s;
     t0_ = spec_.start_s;
     t1_ = spec_.end_s < 0 ? clip : spec_.end_s;
-    if (!(t0_ < t1_) || t1_ > clip + 1e-9)
-      throw InputError(located(scene.path, 0, "body: animation window [" + std::to_string(t0_) + ", " +
-                                                   std::to_string(t1_) + "] s is not inside the clip [0, " +
-                                                   std::to_string(clip) + "] s"));
+    if (!(dress_ <= t0_ && t0_ < t1_) || t1_ > clip + 1e-9)
+      throw InputError(located(scene.path, 0, "body: need dress_at_s <= start_s < end_s inside the clip [0, " +
+                                                   std::to_string(clip) + "] s, got " + std::to_string(dress_) +
+                                                   ", " + std::to_string(t0_) + ", " + std::to_string(t1_)));
   }
 
   bool moves() const { return t1_ > t0_; }
+  double dress_time() const { return dress_; }
   double start() const { return t0_; }
   double end() const { return t1_; }
   bool is_sphere() const { return !model_; }
@@ -77,7 +79,7 @@ class BodySource {
   std::optional<BodyModel> model_;
   BodyFrame sphere_;
   int anim_ = -1;
-  double t0_ = 0, t1_ = 0;
+  double dress_ = 0, t0_ = 0, t1_ = 0;
 };
 
 ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
@@ -182,27 +184,44 @@ void drape(const Scene& scene, Simulator& sim, Progress& progress, PhaseResult& 
   clock.finish(r);
 }
 
-void animate(const Scene& scene, const BodySource& source, Simulator& sim, Collider& collider, BodyFrame& frame,
-             Progress& progress, const FrameCallback& on_frame, RunResult& r) {
+// one body frame: evaluate (timed), update the collider, move attachments, then `steps` cloth steps
+bool advance_frame(const BodySource& source, double t, long steps, Simulator& sim, Collider& collider,
+                   BodyFrame& frame, double& skinning_ms) {
+  Stopwatch skin;
+  source.frame_into(frame, t);
+  skinning_ms += skin.ms();
+  if (auto* sphere = dynamic_cast<SphereCollider*>(&collider)) sphere->set_sphere(source.sphere_center(t), frame.velocities.col(0));
+  collider.update_body(frame);
+  if (!sim.mesh().attached.empty()) sim.follow_attachments(frame);
+  bool alive = true;
+  for (long s = 0; s < steps && alive; ++s) alive = sim.step();
+  return alive;
+}
+
+// the lead-in (dress_at_s -> start_s, with the dressing collider, not measured), then the measured window
+void animate(const Scene& scene, const BodySource& source, Simulator& sim, Collider& collider, Collider& dresser,
+             BodyFrame& frame, Progress& progress, const FrameCallback& on_frame, RunResult& r) {
   if (!source.moves()) return;
   sim.set_phase(Phase::kAnimate);
-  PhaseClock clock{sim};
   const double frame_dt = 1.0 / scene.body.fps;
   const long steps = std::max(1L, static_cast<long>(std::ceil(frame_dt / sim.dt())));
   r.steps_per_frame = double(steps);
-  auto* sphere = dynamic_cast<SphereCollider*>(&collider);
+  const long lead_in = static_cast<long>(std::floor((source.start() - source.dress_time()) / frame_dt + 1e-9));
   const long frames = static_cast<long>(std::floor((source.end() - source.start()) / frame_dt + 1e-9));
-  const double update_before = collider.stats().update_ms;
+  double unmeasured_ms = 0;
   bool alive = true;
+  sim.set_collider(&dresser);
+  for (long f = 1; f <= lead_in && alive; ++f) {
+    alive = advance_frame(source, source.dress_time() + double(f) * frame_dt, steps, sim, dresser, frame, unmeasured_ms);
+    progress.report("animate (lead-in): frame %ld of %ld", f, lead_in);
+  }
+  sim.set_collider(&collider);
+  collider.update_body(frame);
+  PhaseClock clock{sim};
+  const double update_before = collider.stats().update_ms;
   for (long f = 1; f <= frames && alive; ++f) {
     const double t = source.start() + double(f) * frame_dt;
-    Stopwatch skin;
-    source.frame_into(frame, t);
-    r.skinning_ms += skin.ms();
-    if (sphere) sphere->set_sphere(source.sphere_center(t), frame.velocities.col(0));
-    collider.update_body(frame);
-    if (!sim.mesh().attached.empty()) sim.follow_attachments(frame);
-    for (long s = 0; s < steps && alive; ++s) alive = sim.step();
+    alive = advance_frame(source, t, steps, sim, collider, frame, r.skinning_ms);
     ++r.frames;
     r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
     if (on_frame) on_frame(f, t, frame, sim);
@@ -239,7 +258,7 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
   // body, cloth, collider, simulator
   const BodySource source(scene);
   BodyFrame frame;
-  source.frame_into(frame, source.start());
+  source.frame_into(frame, source.dress_time());
   r.body_triangles = frame.triangles.cols();
   ClothMesh cloth = build_cloth(scene, frame);
   std::unique_ptr<Collider> collider = make_scene_collider(scene, scene.collider, source);
@@ -267,8 +286,8 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
   Progress progress(options.progress, options.label.empty() ? scene.name + "/" + scene.collider : options.label);
   sew(scene, *sim, progress, options.trace, r);
   if (!sim->divergence()) drape(scene, *sim, progress, r.drape);
-  sim->set_collider(collider.get());
-  if (!sim->divergence()) animate(scene, source, *sim, *collider, frame, progress, options.on_frame, r);
+  if (!sim->divergence())
+    animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options.on_frame, r);
   r.divergence = sim->divergence();
   r.threads = collider->stats().threads;
   r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&

@@ -110,6 +110,7 @@ class Section {
 void read_body(Section s, BodySpec& b) {
   s.text("file", b.file);
   s.text("animation", b.animation);
+  s.number("dress_at_s", b.dress_at_s, 0, 1e4);
   s.number("start_s", b.start_s, 0, 1e4);
   s.number("end_s", b.end_s, -1, 1e4);
   s.flag("walk_in_place", b.walk_in_place);

@@ -13,7 +13,9 @@ namespace clothbench {
 struct BodySpec {
   std::string file = "debian:human";  ///< "debian:human", "data:REL" (data root) or a path (scene-relative)
   std::string animation;              ///< empty: static rest pose
-  double start_s = 0;                 ///< animation window [s]
+  double dress_at_s = 0;              ///< garments are sewn and draped on the frame at this time [s]
+  double start_s = 0;                 ///< measured animation window [start_s, end_s] [s]; frames between
+                                      ///< dress_at_s and start_s are a lead-in: simulated, not measured
   double end_s = -1;                  ///< < 0: the clip's end
   bool walk_in_place = true;          ///< remove the root's horizontal travel
   double fps = 60;                    ///< body frames per second of animation (collider updates)

@@ -117,12 +117,12 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   k_.resize(ns);
   for (Eigen::Index s = 0; s < ns; ++s) k_[s] = factor * k_kind[static_cast<int>(mesh_.kind[s])];
   m_ = mesh_.vertex_area * material_.density;
-  // elastic seams: given, or mass-relative so that a pair closes in about a quarter of seam_period
+  // elastic seams: given, or mass-relative: every pair gets the cloth's mass per pair, so whole panels
+  // are pulled together in about a quarter of seam_period whatever the resolution
+  const Eigen::Index np = mesh_.seam_pairs.cols();
   const Real omega = Real(2 * M_PI) / params_.seam_period;
-  seam_k_.resize(mesh_.seam_pairs.cols());
-  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
-    seam_k_[p] = params_.seam_stiffness > 0 ? params_.seam_stiffness
-                                            : Real(0.5) * (m_[mesh_.seam_pairs(0, p)] + m_[mesh_.seam_pairs(1, p)]) * omega * omega;
+  const Real auto_k = np ? m_.sum() / Real(np) * omega * omega : Real(0);
+  seam_k_ = Scalars::Constant(np, params_.seam_stiffness > 0 ? params_.seam_stiffness : auto_k);
   inv_m_ = m_.cwiseInverse();
   for (auto a : mesh_.attached) inv_m_[a] = 0;
   x_ = mesh_.positions;

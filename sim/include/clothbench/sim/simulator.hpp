@@ -54,8 +54,8 @@ struct SolverParams {
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
   Real seam_stiffness = 0;       ///< elastic seam springs (rest length 0) [N/m]; 0 = automatic from seam_period
-  Real seam_period = 0.5f;       ///< automatic seam stiffness: each pair k = m (2 pi / seam_period)^2 [s], so
-                                 ///< pairs close like an oscillator of this period whatever the grid's masses
+  Real seam_period = 0.5f;       ///< automatic seam stiffness: every pair k = (cloth mass / pairs) (2 pi / seam_period)^2
+                                 ///< [s], so panels close in about a quarter of it whatever the resolution
   Real attraction_speed = 0.5f;  ///< c_attraction of Durupinar Eq. 1 [m/s]
   Real merge_distance = 0.002f;  ///< seam pairs closer than this are merged [m]
   Real max_speed = 50.f;         ///< divergence: any vertex faster than this [m/s]
