@@ -134,13 +134,15 @@ void draw_png(const std::string& path, const Pattern& pat, const MeshedPattern& 
       img.line(a[0], a[1], b[0], b[1], {0, 0, 0});
     }
   }
-  // seam pairs: both ends dotted in the seam's colour, every pair joined by a line
+  // seam pairs: both ends dotted in the seam's colour; the first, middle and last pair joined
+  // by a line (they cross where a seam is reversed)
   Eigen::Index pair = 0;
   for (std::size_t s = 0; s < m.seam_pair_count.size(); ++s) {
     const Rgb c = colormap(m.seam_pair_count.size() > 1 ? double(s) / double(m.seam_pair_count.size() - 1) : 0.5);
-    for (int k = 0; k < m.seam_pair_count[s]; ++k, ++pair) {
+    const int n = m.seam_pair_count[s];
+    for (int k = 0; k < n; ++k, ++pair) {
       const auto a = vertex_px(m.mesh.seam_pairs(0, pair)), b = vertex_px(m.mesh.seam_pairs(1, pair));
-      img.line(a[0], a[1], b[0], b[1], c);
+      if (k == 0 || k == n / 2 || k == n - 1) img.line(a[0], a[1], b[0], b[1], c);
       img.dot(a[0], a[1], 1, c);
       img.dot(b[0], b[1], 1, c);
     }

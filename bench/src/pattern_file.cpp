@@ -101,6 +101,7 @@ class Parser {
 
   // splits the text into lines of words; rejects binary data and invalid UTF-8
   std::vector<TextLine> split() {
+    check_binary();
     std::vector<TextLine> out;
     int number = 1;
     std::size_t begin = 0;
@@ -124,14 +125,23 @@ class Parser {
     return out;
   }
 
-  void check_text(std::string_view row) const {
-    for (std::size_t i = 0; i < row.size();) {
-      const auto c = static_cast<unsigned char>(row[i]);
-      if ((c < 0x20 && c != '\t') || c == 0x7f) {
+  // control characters anywhere (other than tab and line ends) mean a binary file
+  void check_binary() {
+    line_ = 1;
+    std::size_t column = 1;
+    for (std::size_t i = 0; i < text_.size(); ++i, ++column) {
+      const auto c = static_cast<unsigned char>(text_[i]);
+      if (c == '\n') line_ += 1, column = 0;
+      if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f) {
         std::ostringstream m;
-        m << "binary data, not a pattern file (byte 0x" << std::hex << int(c) << std::dec << " at column " << i + 1 << ")";
+        m << "binary data, not a pattern file (byte 0x" << std::hex << int(c) << std::dec << " at column " << column << ")";
         fail(m.str());
       }
+    }
+  }
+
+  void check_text(std::string_view row) const {
+    for (std::size_t i = 0; i < row.size();) {
       const int n = utf8_length(row, i);
       if (n == 0) fail("not UTF-8 text (bad byte at column " + std::to_string(i + 1) + ")");
       i += static_cast<std::size_t>(n);

@@ -162,7 +162,7 @@ TEST(PatternFile, BadFilesNameFileAndLine) {
   const std::pair<const char*, int> files[] = {
       {"pattern_unclosed.pattern", 7},      {"pattern_self_intersecting.pattern", 6}, {"pattern_missing_panel.pattern", 6},
       {"pattern_missing_edge.pattern", 8},  {"pattern_negative_size.pattern", 3},     {"pattern_nan.pattern", 2},
-      {"pattern_duplicated_seam.pattern", 9}, {"pattern_empty.pattern", 1},           {"pattern_binary.pattern", 1},
+      {"pattern_duplicated_seam.pattern", 9}, {"pattern_empty.pattern", 1},           {"pattern_binary.pattern", 2},
       {"garmentcode_missing_panel.json", 17}, {"garmentcode_broken_loop.json", 10},   {"garmentcode_not_json.json", 7},
   };
   for (const auto& [name, line] : files) {
@@ -192,7 +192,7 @@ std::pair<int, std::string> run_cli(const std::string& args) {
 TEST(PatternFile, CliExitsTwoNamingFileAndLine) {
   if (!std::getenv("CLOTHBENCH_BIN")) GTEST_SKIP() << "CLOTHBENCH_BIN not set (run through ctest)";
   for (const auto& [name, line] : {std::pair<const char*, int>{"pattern_unclosed.pattern", 7},
-                                   {"pattern_binary.pattern", 1},
+                                   {"pattern_binary.pattern", 2},
                                    {"garmentcode_missing_panel.json", 17}}) {
     const auto [code, err] = run_cli("garment \"" + kBad + name + "\"");
     EXPECT_EQ(code, 2) << name;
