@@ -1,0 +1,122 @@
+// Scene files: defaults, every section read, unknown keys and bad values located at file:line, --set.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "clothbench/config.h"
+#include "clothbench/io/errors.hpp"
+#include "scene.hpp"
+
+namespace clothbench {
+namespace {
+
+std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+  try {
+    parse_scene(text, "s.toml", sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Scene, DefaultsWhenEmpty) {
+  const Scene s = parse_scene("", "empty.toml");
+  EXPECT_EQ(s.name, "empty");
+  EXPECT_EQ(s.collider, "is-cpu");
+  EXPECT_EQ(s.body.file, "debian:human");
+  EXPECT_TRUE(s.garments.empty());
+  EXPECT_EQ(s.solver.limit, Limit::kVelocity);
+  EXPECT_EQ(s.collider_options.map_size, 320);
+}
+
+TEST(Scene, ReadsEverySection) {
+  const Scene s = parse_scene(R"(
+[scene]
+name = "x"
+[body]
+file = "data:body/mh_female_walk.glb"
+animation = "walk_07_01"
+start_s = 1.0
+end_s = 1.5
+fps = 30
+[[garment]]
+file = "garments/skirt.pattern"
+vertices = 336
+[[garment]]
+file = "garments/shirt.pattern"
+spacing_cm = 3
+[material]
+k_structural = 40
+[solver]
+dt = 0.0002
+limit = "directional"
+threshold = 0.05
+face_queries = true
+gravity = [0, -9.81, 0]
+[collider]
+name = "embree"
+map_size = 512
+[stop]
+drape_max_s = 0.5
+)", "s.toml");
+  EXPECT_EQ(s.name, "x");
+  EXPECT_EQ(s.body.animation, "walk_07_01");
+  EXPECT_DOUBLE_EQ(s.body.fps, 30);
+  ASSERT_EQ(s.garments.size(), 2u);
+  EXPECT_EQ(s.garments[0].vertices, 336);
+  EXPECT_DOUBLE_EQ(s.garments[1].spacing_cm, 3);
+  EXPECT_FLOAT_EQ(s.material.k_structural, 40);
+  EXPECT_FLOAT_EQ(s.solver.dt, 0.0002f);
+  EXPECT_EQ(s.solver.limit, Limit::kDirectional);
+  EXPECT_TRUE(s.solver.face_queries);
+  EXPECT_EQ(s.collider, "embree");
+  EXPECT_EQ(s.collider_options.map_size, 512);
+  EXPECT_DOUBLE_EQ(s.stop.drape_max_s, 0.5);
+}
+
+TEST(Scene, ErrorsNameFileLineAndKey) {
+  EXPECT_NE(error_of("[solver]\nlimt = \"velocity\"\n").find("s.toml:2: solver.limt"), std::string::npos);
+  EXPECT_NE(error_of("[solver]\n\nlimit = \"fast\"\n").find("s.toml:3: solver.limit"), std::string::npos);
+  EXPECT_NE(error_of("[material]\ndensity = -1\n").find("s.toml:2: material.density: must be in"), std::string::npos);
+  EXPECT_NE(error_of("[material]\ndensity = nan\n").find("s.toml:2"), std::string::npos);
+  EXPECT_NE(error_of("[collider]\nmap_size = 320.5\n").find("expected an integer"), std::string::npos);
+  EXPECT_NE(error_of("[bodyy]\n").find("s.toml:1: unknown section 'bodyy'"), std::string::npos);
+  EXPECT_NE(error_of("[body\n").find("s.toml:1"), std::string::npos);
+  EXPECT_NE(error_of("[[garment]]\nvertices = 5\n").find("garment.file is required"), std::string::npos);
+  EXPECT_NE(error_of("[solver]\nface_queries = 1\n").find("expected true or false"), std::string::npos);
+}
+
+TEST(Scene, SetOverridesAndItsErrors) {
+  const Scene s = parse_scene("[[garment]]\nfile = \"a.pattern\"\n", "s.toml",
+                              {"solver.limit=none", "garment.vertices=1800", "collider.name=fcl", "stop.sew=false"});
+  EXPECT_EQ(s.solver.limit, Limit::kNone);
+  EXPECT_EQ(s.garments[0].vertices, 1800);
+  EXPECT_EQ(s.collider, "fcl");
+  EXPECT_FALSE(s.stop.sew);
+  EXPECT_NE(error_of("", {"solver.nope=1"}).find("solver.nope (from --set): unknown key"), std::string::npos);
+  EXPECT_NE(error_of("", {"novalue"}).find("expected section.key=value"), std::string::npos);
+  EXPECT_NE(error_of("", {"garment.vertices=3"}).find("no [[garment]]"), std::string::npos);
+  EXPECT_NE(error_of("", {"solver.threshold=abc"}).find("expected a number"), std::string::npos);
+}
+
+TEST(Scene, MissingFileAndPathResolution) {
+  EXPECT_THROW(load_scene("/nonexistent/scene.toml"), InputError);
+  Scene s;
+  s.path = std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/dressing/shirt.toml";
+  EXPECT_EQ(resolve_scene_path(s, "debian:human"), "/usr/share/assimp/models/Collada/human.zae");
+  EXPECT_TRUE(std::filesystem::exists(resolve_scene_path(s, "garments/shirt.pattern")));
+}
+
+TEST(Scene, EveryCommittedSceneParses) {
+  int n = 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes"))
+    if (e.path().extension() == ".toml") {
+      const Scene s = load_scene(e.path().string());
+      for (const auto& g : s.garments) EXPECT_TRUE(std::filesystem::exists(resolve_scene_path(s, g.file))) << g.file;
+      ++n;
+    }
+  EXPECT_GE(n, 8);
+}
+
+}  // namespace
+}  // namespace clothbench
