@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-
 #include <nlohmann/json.hpp>
 
 #include "clothbench/io/errors.hpp"
@@ -18,8 +17,8 @@ namespace {
 
 struct GarmentOptions {
   std::string file;
-  int vertices = 0;          // target vertex count; 0 = use the spacing
-  double spacing_cm = 2.0;   // grid spacing when no target is given [cm]
+  int vertices = 0;         // target vertex count; 0 = use the spacing
+  double spacing_cm = 2.0;  // grid spacing when no target is given [cm]
   bool json = false;
   std::string png;
 };
@@ -53,7 +52,8 @@ std::vector<PanelInfo> panel_infos(const Pattern& pat, const MeshedPattern& m) {
   return out;
 }
 
-nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m, const std::vector<PanelInfo>& infos) {
+nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m,
+                       const std::vector<PanelInfo>& infos) {
   nlohmann::json panels = nlohmann::json::array();
   for (const auto& p : infos)
     panels.push_back({{"name", p.name},
@@ -78,7 +78,8 @@ nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const Meshed
           {"attached", static_cast<int>(m.mesh.attached.size())}};
 }
 
-void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m, const std::vector<PanelInfo>& infos) {
+void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m,
+                const std::vector<PanelInfo>& infos) {
   std::printf("garment %s (%s)\n", pat.name.c_str(), o.file.c_str());
   std::printf("  grid spacing   %.3f cm\n", m.spacing_cm);
   std::printf("  panels         %zu\n", pat.panels.size());
@@ -92,15 +93,17 @@ void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern
   std::printf("  seams          %zu, %d seam pairs\n", pat.seams.size(), static_cast<int>(m.mesh.seam_pairs.cols()));
   for (std::size_t s = 0; s < pat.seams.size(); ++s) {
     const Seam& seam = pat.seams[s];
-    std::printf("    %s edge %d <-> %s edge %d  %s, %d pairs\n", pat.panels[static_cast<std::size_t>(seam.panel_a)].name.c_str(),
-                seam.edge_a, pat.panels[static_cast<std::size_t>(seam.panel_b)].name.c_str(), seam.edge_b,
+    std::printf("    %s edge %d <-> %s edge %d  %s, %d pairs\n",
+                pat.panels[static_cast<std::size_t>(seam.panel_a)].name.c_str(), seam.edge_a,
+                pat.panels[static_cast<std::size_t>(seam.panel_b)].name.c_str(), seam.edge_b,
                 seam.reversed ? "reversed" : "aligned", m.seam_pair_count[s]);
   }
   std::printf("  attached       %zu vertices\n", m.mesh.attached.size());
 }
 
 // the meshed panels side by side (pattern view, v up), grid springs, outlines and seam pairs
-void draw_png(const std::string& path, const Pattern& pat, const MeshedPattern& m, const std::vector<PanelInfo>& infos) {
+void draw_png(const std::string& path, const Pattern& pat, const MeshedPattern& m,
+              const std::vector<PanelInfo>& infos) {
   // lay the panels out in a row, a gap of a tenth of the tallest between them
   double tallest = 0, width = 0;
   for (const auto& p : infos) tallest = std::max(tallest, p.hi.y() - p.lo.y());
@@ -113,11 +116,13 @@ void draw_png(const std::string& path, const Pattern& pat, const MeshedPattern& 
   width -= gap;
   const int max_w = 960, max_h = 480, margin = 12;
   const double scale = std::min((max_w - 2 * margin) / width, (max_h - 2 * margin) / tallest);
-  Image img(static_cast<int>(std::ceil(width * scale)) + 2 * margin, static_cast<int>(std::ceil(tallest * scale)) + 2 * margin);
+  Image img(static_cast<int>(std::ceil(width * scale)) + 2 * margin,
+            static_cast<int>(std::ceil(tallest * scale)) + 2 * margin);
   auto px = [&](int panel, const Vec2d& uv) {
     const auto& info = infos[static_cast<std::size_t>(panel)];
-    return std::array<int, 2>{margin + static_cast<int>(std::lround((uv.x() + shift[static_cast<std::size_t>(panel)]) * scale)),
-                              margin + static_cast<int>(std::lround((tallest - (uv.y() - info.lo.y())) * scale))};
+    return std::array<int, 2>{
+        margin + static_cast<int>(std::lround((uv.x() + shift[static_cast<std::size_t>(panel)]) * scale)),
+        margin + static_cast<int>(std::lround((tallest - (uv.y() - info.lo.y())) * scale))};
   };
   auto vertex_px = [&](int v) { return px(m.mesh.panel[static_cast<std::size_t>(v)], m.uv.col(v)); };
   // structural springs
@@ -160,8 +165,10 @@ int run_garment(const GarmentOptions& o) {
   if (o.vertices == 0 && !(o.spacing_cm > 0)) throw InputError("--spacing must be > 0 cm");
   const Pattern pat = load_pattern(o.file);
   MeshingOptions mo;
-  if (o.vertices > 0) mo.target_vertices = o.vertices;
-  else mo.spacing_cm = o.spacing_cm;
+  if (o.vertices > 0)
+    mo.target_vertices = o.vertices;
+  else
+    mo.spacing_cm = o.spacing_cm;
   MeshedPattern m;
   try {
     m = mesh_pattern(pat, mo);
@@ -169,8 +176,10 @@ int run_garment(const GarmentOptions& o) {
     throw InputError(located(o.file, 0, e.what()));
   }
   const auto infos = panel_infos(pat, m);
-  if (o.json) std::cout << to_json(o, pat, m, infos).dump(2) << "\n";
-  else print_text(o, pat, m, infos);
+  if (o.json)
+    std::cout << to_json(o, pat, m, infos).dump(2) << "\n";
+  else
+    print_text(o, pat, m, infos);
   if (!o.png.empty()) draw_png(o.png, pat, m, infos);
   return 0;
 }
@@ -179,10 +188,12 @@ int run_garment(const GarmentOptions& o) {
 
 void add_garment_command(CLI::App& app, Action& action) {
   auto opts = std::make_shared<GarmentOptions>();
-  auto* cmd = app.add_subcommand("garment", "Mesh a pattern file (.pattern or GarmentCode .json) and print what it holds");
+  auto* cmd =
+      app.add_subcommand("garment", "Mesh a pattern file (.pattern or GarmentCode .json) and print what it holds");
   cmd->add_option("file", opts->file, "Pattern file")->required();
   cmd->add_option("--vertices", opts->vertices, "Target vertex count of the whole garment (within a few per cent)");
-  cmd->add_option("--spacing", opts->spacing_cm, "Grid spacing [cm], used when --vertices is not given")->capture_default_str();
+  cmd->add_option("--spacing", opts->spacing_cm, "Grid spacing [cm], used when --vertices is not given")
+      ->capture_default_str();
   cmd->add_flag("--json", opts->json, "Print JSON (keys panels, vertices, springs, seams, seam_pairs, quads)");
   cmd->add_option("--png", opts->png, "Draw the meshed panels and seams into this PNG file");
   cmd->callback([opts, &action] { action = [opts] { return run_garment(*opts); }; });

@@ -6,11 +6,10 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
@@ -208,8 +207,11 @@ class Converter {
     if (spec.contains("panel_order")) {
       const json& po = at(spec, "/pattern/panel_order", json::value_t::array);
       for (std::size_t i = 0; i < po.size(); ++i) {
-        const std::string n = at(po, "/pattern/panel_order/" + std::to_string(i), json::value_t::string).get<std::string>();
-        if (!panels.contains(n)) fail("/pattern/panel_order/" + std::to_string(i), "panel_order names panel '" + n + "', which is not in panels");
+        const std::string n =
+            at(po, "/pattern/panel_order/" + std::to_string(i), json::value_t::string).get<std::string>();
+        if (!panels.contains(n))
+          fail("/pattern/panel_order/" + std::to_string(i),
+               "panel_order names panel '" + n + "', which is not in panels");
         order.push_back(n);
       }
       for (const auto& [n, p] : panels.items())
@@ -269,7 +271,9 @@ class Converter {
     const bool ok = number ? v->is_number() : integer ? v->is_number_integer() : v->type() == type;
     if (!ok)
       fail(pointer, pointer + " must be " +
-                        (number ? std::string("a number") : integer ? std::string("an integer") : std::string(json(type).type_name())));
+                        (number    ? std::string("a number")
+                         : integer ? std::string("an integer")
+                                   : std::string(json(type).type_name())));
     if (number && !std::isfinite(v->get<double>())) fail(pointer, pointer + " is not a finite number");
     return *v;
   }
@@ -308,7 +312,8 @@ class Converter {
     }
     if (p.contains("curvature_coords")) {
       const std::string c = at(p, "/properties/curvature_coords", json::value_t::string).get<std::string>();
-      if (c != "relative" && c != "absolute") fail("/properties/curvature_coords", "curvature_coords must be relative or absolute, got '" + c + "'");
+      if (c != "relative" && c != "absolute")
+        fail("/properties/curvature_coords", "curvature_coords must be relative or absolute, got '" + c + "'");
       relative_ = c == "relative";
     }
   }
@@ -320,7 +325,8 @@ class Converter {
     if (name.find('.') != std::string::npos) fail(base, "panel name '" + name + "' must not contain '.'");
     const json& vs = at(pj, base + "/vertices", json::value_t::array);
     std::vector<Vec2d> verts;
-    for (std::size_t i = 0; i < vs.size(); ++i) verts.push_back(to_cm_ * point2(vs, base + "/vertices/" + std::to_string(i)));
+    for (std::size_t i = 0; i < vs.size(); ++i)
+      verts.push_back(to_cm_ * point2(vs, base + "/vertices/" + std::to_string(i)));
     const json& es = at(pj, base + "/edges", json::value_t::array);
     if (es.size() < 2) fail(base + "/edges", "panel '" + name + "' needs at least 2 edges");
     Panel p;
@@ -334,13 +340,16 @@ class Converter {
       std::array<int, 2> ab{};
       for (std::size_t k = 0; k < 2; ++k) {
         const json& idx = en.at(k);
-        if (!idx.is_number_integer() || idx.get<long long>() < 0 || idx.get<long long>() >= static_cast<long long>(verts.size()))
-          fail(ep + "/endpoints/" + std::to_string(k), "edge " + std::to_string(e) + " of panel '" + name + "' names a missing vertex");
+        if (!idx.is_number_integer() || idx.get<long long>() < 0 ||
+            idx.get<long long>() >= static_cast<long long>(verts.size()))
+          fail(ep + "/endpoints/" + std::to_string(k),
+               "edge " + std::to_string(e) + " of panel '" + name + "' names a missing vertex");
         ab[k] = idx.get<int>();
       }
       if (e > 0 && ab[0] != ends.back()[1])
         fail(ep, "edges of panel '" + name + "' do not form a loop: edge " + std::to_string(e) + " starts at vertex " +
-                     std::to_string(ab[0]) + ", edge " + std::to_string(e - 1) + " ended at " + std::to_string(ends.back()[1]));
+                     std::to_string(ab[0]) + ", edge " + std::to_string(e - 1) + " ended at " +
+                     std::to_string(ends.back()[1]));
       ends.push_back(ab);
       if (e == 0) p.outline.push_back(verts[static_cast<std::size_t>(ab[0])]);
       p.edge_begin.push_back(static_cast<int>(p.outline.size()) - 1);
@@ -348,7 +357,9 @@ class Converter {
       if (e + 1 == es.size()) pts.pop_back();  // the loop's end is its start
       p.outline.insert(p.outline.end(), pts.begin(), pts.end());
     }
-    if (ends.back()[1] != ends.front()[0]) fail(base + "/edges", "outline of panel '" + name + "' is not closed: its last edge does not end where the first starts");
+    if (ends.back()[1] != ends.front()[0])
+      fail(base + "/edges",
+           "outline of panel '" + name + "' is not closed: its last edge does not end where the first starts");
     if (outline_self_intersects(p.outline)) fail(base, "outline of panel '" + name + "' intersects itself");
     placement(p, pj, base);
     panel_ends_.push_back(ends);
@@ -373,11 +384,14 @@ class Converter {
       if (params.size() != 3) fail(ep + "/curvature/params", "circle params must be [radius, large_arc, right]");
       const double r = to_cm_ * number(params, ep + "/curvature/params/0");
       if (!(r > 0)) fail(ep + "/curvature/params/0", "circle radius must be > 0");
-      return flatten_arc(a, b, r, number(params, ep + "/curvature/params/1") != 0, number(params, ep + "/curvature/params/2") != 0);
+      return flatten_arc(a, b, r, number(params, ep + "/curvature/params/1") != 0,
+                         number(params, ep + "/curvature/params/2") != 0);
     }
     const std::size_t n = type == "quadratic" ? 1 : type == "cubic" ? 2 : 0;
-    if (n == 0) fail(ep + "/curvature/type", "unknown curvature type '" + type + "' (expected quadratic, cubic, circle)");
-    if (params.size() != n) fail(ep + "/curvature/params", type + " curvature needs " + std::to_string(n) + " control points");
+    if (n == 0)
+      fail(ep + "/curvature/type", "unknown curvature type '" + type + "' (expected quadratic, cubic, circle)");
+    if (params.size() != n)
+      fail(ep + "/curvature/params", type + " curvature needs " + std::to_string(n) + " control points");
     std::vector<Vec2d> controls;
     for (std::size_t k = 0; k < n; ++k) {
       const Vec2d q = point2(params, ep + "/curvature/params/" + std::to_string(k));
@@ -487,7 +501,8 @@ Box3 obj_bounding_box(const std::string& path) {
     box.max = any ? box.max.cwiseMax(p) : p;
     any = true;
   }
-  if (!any || !(box.size().y() > 0)) throw InputError(located(path, 0, "the reference body has no vertices or no height"));
+  if (!any || !(box.size().y() > 0))
+    throw InputError(located(path, 0, "the reference body has no vertices or no height"));
   return box;
 }
 
@@ -498,11 +513,13 @@ Pattern load_garmentcode(const std::string& path) {
   buf << in.rdbuf();
   // the body GarmentCode placed the panels for
   const auto slash = path.find_last_of('/');
-  const std::string beside = (slash == std::string::npos ? std::string() : path.substr(0, slash + 1)) + "mean_female.obj";
+  const std::string beside =
+      (slash == std::string::npos ? std::string() : path.substr(0, slash + 1)) + "mean_female.obj";
   const std::string shared = data_path("garments/garmentcode/mean_female.obj");
   if (!readable(beside) && !readable(shared))
-    throw InputError(located(path, 0, "GarmentCode placements need their reference body mean_female.obj (looked in " + beside +
-                                          " and " + shared + ")"));
+    throw InputError(located(path, 0,
+                             "GarmentCode placements need their reference body mean_female.obj (looked in " + beside +
+                                 " and " + shared + ")"));
   return parse_garmentcode(buf.str(), path, obj_bounding_box(readable(beside) ? beside : shared));
 }
 

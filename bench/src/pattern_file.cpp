@@ -134,7 +134,8 @@ class Parser {
       if (c == '\n') line_ += 1, column = 0;
       if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f) {
         std::ostringstream m;
-        m << "binary data, not a pattern file (byte 0x" << std::hex << int(c) << std::dec << " at column " << column << ")";
+        m << "binary data, not a pattern file (byte 0x" << std::hex << int(c) << std::dec << " at column " << column
+          << ")";
         fail(m.str());
       }
     }
@@ -164,8 +165,7 @@ class Parser {
   double number(std::string_view w, const std::string& what) const {
     double v = 0;
     const auto r = std::from_chars(w.data(), w.data() + w.size(), v);
-    if (r.ec != std::errc() || r.ptr != w.data() + w.size())
-      fail(what + ": '" + std::string(w) + "' is not a number");
+    if (r.ec != std::errc() || r.ptr != w.data() + w.size()) fail(what + ": '" + std::string(w) + "' is not a number");
     if (!std::isfinite(v)) fail(what + ": '" + std::string(w) + "' is not a finite number");
     return v;
   }
@@ -244,7 +244,10 @@ class Parser {
       } else if (key == "yaw" || key == "pitch" || key == "roll" || key == "wrap") {
         const double v = numbers(w, i + 1, 1, "place " + key)[0];
         if (key == "wrap" && v < 0) fail("place wrap: the radius must be >= 0 cm, got " + std::string(w[i + 1]));
-        (key == "yaw" ? p.yaw_deg : key == "pitch" ? p.pitch_deg : key == "roll" ? p.roll_deg : p.wrap_radius_cm) = Real(v);
+        (key == "yaw"     ? p.yaw_deg
+         : key == "pitch" ? p.pitch_deg
+         : key == "roll"  ? p.roll_deg
+                          : p.wrap_radius_cm) = Real(v);
         i += 2;
       } else {
         fail("place: unknown key '" + key + "' (expected anchor, offset, yaw, pitch, roll, wrap)");
@@ -266,7 +269,8 @@ class Parser {
     PanelDraft& d = *current_;
     if (!d.started) fail("edge before 'start X Y' in panel '" + d.panel.name + "'");
     if (d.closed) fail("edge after the outline of panel '" + d.panel.name + "' was closed");
-    if (w.size() < 3) fail("expected 'edge NAME SEGMENT...' (segments: line X Y, quad CX CY X Y, cubic C1X C1Y C2X C2Y X Y, close)");
+    if (w.size() < 3)
+      fail("expected 'edge NAME SEGMENT...' (segments: line X Y, quad CX CY X Y, cubic C1X C1Y C2X C2Y X Y, close)");
     add_edge_name(name(w[1], "edge"));
     for (std::size_t i = 2; i < w.size();) {
       if (d.closed) fail("segment after the outline of panel '" + d.panel.name + "' was closed");
@@ -301,7 +305,8 @@ class Parser {
     PanelDraft& d = *current_;
     for (std::size_t e = 0; e < d.edge_names.size(); ++e)
       if (d.edge_names[e] == n)
-        fail("panel '" + d.panel.name + "' has two edges named '" + n + "' (first at line " + std::to_string(d.edge_lines[e]) + ")");
+        fail("panel '" + d.panel.name + "' has two edges named '" + n + "' (first at line " +
+             std::to_string(d.edge_lines[e]) + ")");
     d.edge_names.push_back(n);
     d.edge_lines.push_back(line_);
     d.panel.edge_begin.push_back(static_cast<int>(d.panel.outline.size()) - 1);
@@ -312,7 +317,8 @@ class Parser {
     PanelDraft& d = *current_;
     const double scale = 1 + d.cursor.norm() + p.norm();
     if ((p - d.cursor).norm() <= 1e-9 * scale)
-      fail("zero-length segment at (" + format_number(p.x()) + ", " + format_number(p.y()) + ") in panel '" + d.panel.name + "'");
+      fail("zero-length segment at (" + format_number(p.x()) + ", " + format_number(p.y()) + ") in panel '" +
+           d.panel.name + "'");
     d.segment_edge.push_back(static_cast<int>(d.edge_names.size()) - 1);
     d.cursor = p;
     if ((p - d.start).norm() <= 1e-9 * scale) {
@@ -328,7 +334,8 @@ class Parser {
     if (d.started) fail("'rect' in panel '" + d.panel.name + "', which already has an outline");
     expect_count(w, 3, "rect WIDTH HEIGHT");
     const auto v = numbers(w, 1, 2, "rect");
-    if (!(v[0] > 0) || !(v[1] > 0)) fail("rect: width and height must be > 0 cm, got " + std::string(w[1]) + " x " + std::string(w[2]));
+    if (!(v[0] > 0) || !(v[1] > 0))
+      fail("rect: width and height must be > 0 cm, got " + std::string(w[1]) + " x " + std::string(w[2]));
     d.started = true;
     d.start = d.cursor = Vec2d(-v[0] / 2, 0);
     d.panel.outline.push_back(d.start);
@@ -346,7 +353,9 @@ class Parser {
     if (w.size() < 2) fail("expected 'attach EDGE...'");
     for (std::size_t i = 1; i < w.size(); ++i) {
       const int e = edge_index(*current_, std::string(w[i]));
-      if (e < 0) fail("attach: panel '" + current_->panel.name + "' has no edge '" + std::string(w[i]) + "' (attach after the edges)");
+      if (e < 0)
+        fail("attach: panel '" + current_->panel.name + "' has no edge '" + std::string(w[i]) +
+             "' (attach after the edges)");
       current_->panel.attached_edges.push_back(e);
     }
   }
@@ -364,8 +373,8 @@ class Parser {
     if (!d.started) fail("panel '" + d.panel.name + "' has no outline (use 'start' and 'edge', or 'rect')");
     if (!d.closed)
       fail("outline of panel '" + d.panel.name + "' is not closed: it ends at (" + format_number(d.cursor.x()) + ", " +
-           format_number(d.cursor.y()) + ") but starts at (" + format_number(d.start.x()) + ", " + format_number(d.start.y()) +
-           "); end the last edge at the start point or with 'close'");
+           format_number(d.cursor.y()) + ") but starts at (" + format_number(d.start.x()) + ", " +
+           format_number(d.start.y()) + "); end the last edge at the start point or with 'close'");
     if (d.panel.outline.size() < 3) fail("outline of panel '" + d.panel.name + "' has fewer than 3 points");
     check_crossings(d);
     current_ = nullptr;
@@ -377,7 +386,8 @@ class Parser {
     auto cross = [](const Vec2d& a, const Vec2d& b) { return a.x() * b.y() - a.y() * b.x(); };
     auto crosses = [&](std::size_t i, std::size_t j) {
       const Vec2d a = o[i], b = o[(i + 1) % n], c = o[j], e = o[(j + 1) % n];
-      const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a), d3 = cross(e - c, a - c), d4 = cross(e - c, b - c);
+      const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a), d3 = cross(e - c, a - c),
+                   d4 = cross(e - c, b - c);
       return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
     };
     for (std::size_t j = 2; j < n; ++j)
@@ -386,8 +396,9 @@ class Parser {
         if (!crosses(i, j)) continue;
         const int ei = d.segment_edge[i], ej = d.segment_edge[j];
         line_ = d.edge_lines[static_cast<std::size_t>(ej)];
-        fail("outline of panel '" + d.panel.name + "' intersects itself: edge '" + d.edge_names[static_cast<std::size_t>(ej)] +
-             "' crosses edge '" + d.edge_names[static_cast<std::size_t>(ei)] + "'");
+        fail("outline of panel '" + d.panel.name + "' intersects itself: edge '" +
+             d.edge_names[static_cast<std::size_t>(ej)] + "' crosses edge '" +
+             d.edge_names[static_cast<std::size_t>(ei)] + "'");
       }
   }
 
@@ -400,7 +411,8 @@ class Parser {
     split_ref(w[1], s.panel_a, s.edge_a);
     split_ref(w[2], s.panel_b, s.edge_b);
     if (w.size() == 4) {
-      if (w[3] != "reversed" && w[3] != "aligned") fail("seam orientation '" + std::string(w[3]) + "': expected reversed or aligned");
+      if (w[3] != "reversed" && w[3] != "aligned")
+        fail("seam orientation '" + std::string(w[3]) + "': expected reversed or aligned");
       s.reversed = w[3] == "reversed";
     }
     seams_.push_back(std::move(s));
@@ -408,7 +420,8 @@ class Parser {
 
   void split_ref(std::string_view ref, std::string& panel, std::string& edge) const {
     const auto dot = ref.find('.');
-    if (dot == std::string_view::npos || dot == 0 || dot + 1 == ref.size() || ref.find('.', dot + 1) != std::string_view::npos)
+    if (dot == std::string_view::npos || dot == 0 || dot + 1 == ref.size() ||
+        ref.find('.', dot + 1) != std::string_view::npos)
       fail("seam side '" + std::string(ref) + "': expected PANEL.EDGE");
     panel = std::string(ref.substr(0, dot));
     edge = std::string(ref.substr(dot + 1));
@@ -425,7 +438,8 @@ class Parser {
       seam.panel_b = panel_index(s.panel_b);
       seam.edge_a = resolve_edge(seam.panel_a, s.edge_a);
       seam.edge_b = resolve_edge(seam.panel_b, s.edge_b);
-      if (seam.panel_a == seam.panel_b && seam.edge_a == seam.edge_b) fail("seam sews edge '" + s.edge_a + "' to itself");
+      if (seam.panel_a == seam.panel_b && seam.edge_a == seam.edge_b)
+        fail("seam sews edge '" + s.edge_a + "' to itself");
       std::array<int, 4> key{seam.panel_a, seam.edge_a, seam.panel_b, seam.edge_b};
       if (key[0] > key[2] || (key[0] == key[2] && key[1] > key[3])) key = {key[2], key[3], key[0], key[1]};
       const auto [it, fresh] = seen.emplace(key, s.line);
@@ -492,7 +506,8 @@ std::string write_pattern(const Pattern& pattern) {
       const int s0 = p.edge_begin[static_cast<std::size_t>(e)];
       const int s1 = e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n;
       out << "  edge e" << e;
-      for (int s = s0 + 1; s <= s1; ++s) out << (s == n ? " close" : " line " + xy(p.outline[static_cast<std::size_t>(s)]));
+      for (int s = s0 + 1; s <= s1; ++s)
+        out << (s == n ? " close" : " line " + xy(p.outline[static_cast<std::size_t>(s)]));
       out << "\n";
     }
     if (!p.attached_edges.empty()) {

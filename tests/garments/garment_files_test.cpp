@@ -18,10 +18,10 @@ namespace clothbench {
 namespace {
 
 const std::string kGarments = std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/garments/";
-const char* const kFiles[] = {"shirt", "shirt_sleeves", "skirt", "dress", "dress_sleeves", "trousers", "durupinar_trousers",
-                              "tablecloth"};
-const char* const kGarmentCode[] = {"dress_pencil_specification", "hoody_mean_specification", "js_mean_all_specification",
-                                    "shirt_mean_specification"};
+const char* const kFiles[] = {"shirt",    "shirt_sleeves",      "skirt",     "dress", "dress_sleeves",
+                              "trousers", "durupinar_trousers", "tablecloth"};
+const char* const kGarmentCode[] = {"dress_pencil_specification", "hoody_mean_specification",
+                                    "js_mean_all_specification", "shirt_mean_specification"};
 
 std::string garmentcode_path(const std::string& name) { return data_path("garments/garmentcode/" + name + ".json"); }
 
@@ -33,7 +33,8 @@ std::pair<double, double> on_edge(const Panel& panel, int e, const Vec2d& p) {
   const int s1 = e + 1 < panel.edge_count() ? panel.edge_begin[static_cast<std::size_t>(e + 1)] : n;
   double best = 1e300, at = 0, len = 0;
   for (int s = s0; s < s1; ++s) {
-    const Vec2d a = panel.outline[static_cast<std::size_t>(s)], b = panel.outline[static_cast<std::size_t>((s + 1) % n)];
+    const Vec2d a = panel.outline[static_cast<std::size_t>(s)],
+                b = panel.outline[static_cast<std::size_t>((s + 1) % n)];
     const double l = (b - a).norm();
     const double t = std::clamp((p - a).dot(b - a) / (l * l), 0.0, 1.0);
     const double d = (a + t * (b - a) - p).norm();
@@ -59,7 +60,9 @@ bool narrow_dart(const Pattern& pat, const Seam& seam, double width) {
   if (seam.panel_a != seam.panel_b) return false;
   const Panel& p = pat.panels[static_cast<std::size_t>(seam.panel_a)];
   const int n = p.edge_count(), lo = std::min(seam.edge_a, seam.edge_b), hi = std::max(seam.edge_a, seam.edge_b);
-  auto start = [&](int e) { return p.outline[static_cast<std::size_t>(p.edge_begin[static_cast<std::size_t>((e + n) % n)])]; };
+  auto start = [&](int e) {
+    return p.outline[static_cast<std::size_t>(p.edge_begin[static_cast<std::size_t>((e + n) % n)])];
+  };
   if (hi == lo + 1) return (start(lo) - start(hi + 1)).norm() < width;
   if (lo == 0 && hi == n - 1) return (start(hi) - start(1)).norm() < width;
   return false;
@@ -122,10 +125,17 @@ struct PaperCount {
 TEST(GarmentFiles, PaperVertexCountsWithinFivePercent) {
   // dressing section 7 and Table 1; walking Tables 1-2; Durupinar Figure 6
   const PaperCount counts[] = {
-      {"shirt", 544, {272, 272}},           {"shirt", 1800, {}},         {"skirt", 336, {168, 168}},
-      {"skirt", 672, {}},                   {"dress", 1024, {512, 512}}, {"dress", 3840, {}},
-      {"trousers", 600, {150, 150, 150, 150}}, {"shirt_sleeves", 816, {272, 272, 136, 136}},
-      {"dress_sleeves", 2300, {}},          {"skirt", 1400, {}},         {"durupinar_trousers", 2774, {}},
+      {"shirt", 544, {272, 272}},
+      {"shirt", 1800, {}},
+      {"skirt", 336, {168, 168}},
+      {"skirt", 672, {}},
+      {"dress", 1024, {512, 512}},
+      {"dress", 3840, {}},
+      {"trousers", 600, {150, 150, 150, 150}},
+      {"shirt_sleeves", 816, {272, 272, 136, 136}},
+      {"dress_sleeves", 2300, {}},
+      {"skirt", 1400, {}},
+      {"durupinar_trousers", 2774, {}},
   };
   for (const auto& c : counts) {
     SCOPED_TRACE(std::string(c.file) + " " + std::to_string(c.vertices));
@@ -200,7 +210,8 @@ TEST(GarmentCode, CurvesAndPlacement) {
   // straight edges stay one segment; curved ones (edges 2, 3: cubic, 5: quadratic) are flattened
   const int n = static_cast<int>(torso->outline.size());
   for (int e = 0; e < 7; ++e) {
-    const int segments = (e + 1 < 7 ? torso->edge_begin[static_cast<std::size_t>(e + 1)] : n) - torso->edge_begin[static_cast<std::size_t>(e)];
+    const int segments = (e + 1 < 7 ? torso->edge_begin[static_cast<std::size_t>(e + 1)] : n) -
+                         torso->edge_begin[static_cast<std::size_t>(e)];
     const bool curved = e == 2 || e == 3 || e == 5;
     if (curved) {
       EXPECT_GE(segments, std::max(2, static_cast<int>(edge_length(*torso, e)))) << "edge " << e;
@@ -229,10 +240,10 @@ TEST(GarmentCode, RotationsOfAnyAxisBecomeYawRollPitch) {
   const Pattern pat = parse_garmentcode(spec, "rot.json", ref);
   const Placement& pl = pat.panels[0].placement;
   const double d2r = M_PI / 180;
-  const Eigen::Matrix3d want = (Eigen::AngleAxisd(30 * d2r, Eigen::Vector3d::UnitX()) *
-                                Eigen::AngleAxisd(-40 * d2r, Eigen::Vector3d::UnitY()) *
-                                Eigen::AngleAxisd(70 * d2r, Eigen::Vector3d::UnitZ()))
-                                   .toRotationMatrix();
+  const Eigen::Matrix3d want =
+      (Eigen::AngleAxisd(30 * d2r, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(-40 * d2r, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(70 * d2r, Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
   const Eigen::Matrix3d got = (Eigen::AngleAxisd(pl.yaw_deg * d2r, Eigen::Vector3d::UnitY()) *
                                Eigen::AngleAxisd(pl.roll_deg * d2r, Eigen::Vector3d::UnitZ()) *
                                Eigen::AngleAxisd(pl.pitch_deg * d2r, Eigen::Vector3d::UnitX()))
@@ -268,6 +279,14 @@ TEST(GarmentFiles, PlacedAroundTheBodyNotInsideIt) {
     const Box3 c = bounding_box(cloth.positions);
     const float margin = std::string(file) == "tablecloth" ? 0.4f : 0.25f;  // 1 m square over a 0.4 m deep body
     EXPECT_TRUE(((c.min - box.min).array() > -margin).all() && ((c.max - box.max).array() < margin).all()) << file;
+  }
+  // GarmentCode's placements, made for their 1.66 m body, carried over to ours
+  for (const char* name : kGarmentCode) {
+    const std::string gc = garmentcode_path(name);
+    if (!std::ifstream(gc)) continue;
+    MeshingOptions o;
+    o.spacing_cm = 3;
+    EXPECT_LT(inside_share(build_garment(load_pattern(gc), o, rest), rest), 0.01) << name;
   }
 }
 

@@ -1,13 +1,13 @@
 #include "pattern_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 #include "clothbench/config.h"
 #include "clothbench/io/errors.hpp"
@@ -35,7 +35,8 @@ void expect_same(const Pattern& a, const Pattern& b) {
     const Panel &x = a.panels[p], &y = b.panels[p];
     EXPECT_EQ(x.name, y.name);
     ASSERT_EQ(x.outline.size(), y.outline.size()) << x.name;
-    for (std::size_t i = 0; i < x.outline.size(); ++i) EXPECT_EQ(x.outline[i], y.outline[i]) << x.name << " point " << i;
+    for (std::size_t i = 0; i < x.outline.size(); ++i)
+      EXPECT_EQ(x.outline[i], y.outline[i]) << x.name << " point " << i;
     EXPECT_EQ(x.edge_begin, y.edge_begin) << x.name;
     EXPECT_EQ(x.attached_edges, y.attached_edges) << x.name;
     EXPECT_EQ(x.placement.anchor, y.placement.anchor) << x.name;
@@ -111,8 +112,8 @@ seam front.left back.right aligned
 }
 
 TEST(PatternFile, GarmentFilesRoundTrip) {
-  for (const char* name : {"shirt", "shirt_sleeves", "skirt", "dress", "dress_sleeves", "trousers", "durupinar_trousers",
-                           "tablecloth"}) {
+  for (const char* name :
+       {"shirt", "shirt_sleeves", "skirt", "dress", "dress_sleeves", "trousers", "durupinar_trousers", "tablecloth"}) {
     SCOPED_TRACE(name);
     const Pattern p = load_pattern(kGarments + name + ".pattern");
     const Pattern back = parse_pattern(write_pattern(p), "written.pattern");
@@ -128,7 +129,8 @@ TEST(PatternFile, ErrorsNameTheLine) {
   };
   const Case cases[] = {
       {"panel a\n  start 0 0\n  edge e line 1 0 line 1 1\nend\n", 4, "not closed"},
-      {"panel a\n  start 0 0\n  edge e line 4 4\n  edge f line 4 0\n  edge g line 0 4 close\nend\n", 5, "intersects itself"},
+      {"panel a\n  start 0 0\n  edge e line 4 4\n  edge f line 4 0\n  edge g line 0 4 close\nend\n", 5,
+       "intersects itself"},
       {"panel a\n  rect 4 4\nend\nseam a.left b.right\n", 4, "panel 'b'"},
       {"panel a\n  rect 4 4\nend\nseam a.left a.armhole\n", 4, "no such edge"},
       {"panel a\n  rect 4 -4\nend\n", 2, "must be > 0"},
@@ -153,17 +155,20 @@ TEST(PatternFile, ErrorsNameTheLine) {
   };
   for (const auto& c : cases) {
     const std::string message = parse_error(c.text);
-    EXPECT_NE(message.find("t.pattern:" + std::to_string(c.line) + ": "), std::string::npos) << c.text << "\n-> " << message;
+    EXPECT_NE(message.find("t.pattern:" + std::to_string(c.line) + ": "), std::string::npos)
+        << c.text << "\n-> " << message;
     EXPECT_NE(message.find(c.says), std::string::npos) << c.text << "\n-> " << message;
   }
 }
 
 TEST(PatternFile, BadFilesNameFileAndLine) {
   const std::pair<const char*, int> files[] = {
-      {"pattern_unclosed.pattern", 7},      {"pattern_self_intersecting.pattern", 6}, {"pattern_missing_panel.pattern", 6},
-      {"pattern_missing_edge.pattern", 8},  {"pattern_negative_size.pattern", 3},     {"pattern_nan.pattern", 2},
-      {"pattern_duplicated_seam.pattern", 9}, {"pattern_empty.pattern", 1},           {"pattern_binary.pattern", 2},
-      {"garmentcode_missing_panel.json", 17}, {"garmentcode_broken_loop.json", 10},   {"garmentcode_not_json.json", 7},
+      {"pattern_unclosed.pattern", 7},        {"pattern_self_intersecting.pattern", 6},
+      {"pattern_missing_panel.pattern", 6},   {"pattern_missing_edge.pattern", 8},
+      {"pattern_negative_size.pattern", 3},   {"pattern_nan.pattern", 2},
+      {"pattern_duplicated_seam.pattern", 9}, {"pattern_empty.pattern", 1},
+      {"pattern_binary.pattern", 2},          {"garmentcode_missing_panel.json", 17},
+      {"garmentcode_broken_loop.json", 10},   {"garmentcode_not_json.json", 7},
   };
   for (const auto& [name, line] : files) {
     const std::string path = kBad + name;
