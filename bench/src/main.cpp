@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
   clothbench::cli::add_maps_command(app, action);
   clothbench::cli::add_garment_command(app, action);
   clothbench::cli::add_body_command(app, action);
+  clothbench::cli::add_run_command(app, action);
+  clothbench::cli::add_reproduce_command(app, action);
+  clothbench::cli::add_compare_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -37,9 +37,9 @@ struct GarmentSpec {
 /// When each phase ends (definitions printed in every table header).
 struct StopRule {
   bool sew = true;              ///< run the sew phase (seam forces, no gravity)
-  double sew_max_s = 3;         ///< sew phase limit [simulated s]
+  double sew_max_s = 1;         ///< sew phase limit [simulated s]
   Real sewn_gap_mm = 2;         ///< sewn: every seam pair closer than this [mm] (or merged)
-  double drape_max_s = 2;       ///< drape phase limit [simulated s]
+  double drape_max_s = 1;       ///< drape phase limit [simulated s]
   Real settle_speed = 0.05f;    ///< settled: RMS cloth speed below this [m/s] ...
   double settle_window_s = 0.1; ///< ... for this long [simulated s]
   long max_iterations = 0;      ///< > 0: stop every phase after this many iterations (timing runs)
