@@ -22,6 +22,13 @@ using nlohmann::json;
 
 constexpr double kChordCm = 1.0;  // longest chord of a flattened curve [cm]
 
+// A key as a JSON pointer token (RFC 6901: ~ as ~0, / as ~1).
+std::string escape(const std::string& k) {
+  std::string out;
+  for (char c : k) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+  return out;
+}
+
 // Counts lines as nlohmann's lexer consumes characters: the line of the last character read,
 // not counting it when it is the newline that ended a number.
 struct LineCounter {
@@ -99,12 +106,6 @@ class LineSax {
     std::size_t index = 0;
     std::string key, path;
   };
-
-  static std::string escape(const std::string& k) {
-    std::string out;
-    for (char c : k) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
-    return out;
-  }
 
   // the pointer of the value being read; arrays count their elements
   std::string here() {
@@ -365,12 +366,6 @@ class Converter {
     panel_ends_.push_back(ends);
     panel_vertices_.push_back(verts);
     pattern_.panels.push_back(std::move(p));
-  }
-
-  static std::string escape(const std::string& k) {
-    std::string out;
-    for (char c : k) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
-    return out;
   }
 
   // one edge's points after its start: straight, Bezier or circle arc

@@ -45,7 +45,11 @@ std::string stem(const std::string& path) {
   const auto slash = path.find_last_of('/');
   std::string s = slash == std::string::npos ? path : path.substr(slash + 1);
   const auto dot = s.find_last_of('.');
-  return dot == std::string::npos || dot == 0 ? s : s.substr(0, dot);
+  if (dot != std::string::npos && dot > 0) s = s.substr(0, dot);
+  // a name is one word: spaces become underscores
+  std::replace_if(
+      s.begin(), s.end(), [](char c) { return c == ' ' || c == '\t'; }, '_');
+  return s;
 }
 
 bool ends_with(const std::string& s, const std::string& suffix) {

@@ -273,8 +273,25 @@ TEST(GarmentFiles, PlacedAroundTheBodyNotInsideIt) {
     const Pattern pat = load_pattern(kGarments + file + ".pattern");
     MeshingOptions o;
     o.spacing_cm = 3;
-    const ClothMesh cloth = build_garment(pat, o, rest);
+    const MeshedPattern meshed = mesh_pattern(pat, o);
+    const ClothMesh cloth = place_garment(meshed, pat, rest);
     EXPECT_EQ(inside_share(cloth, rest), 0.0) << file;
+    // seams start within 45 cm, each oriented so that its ends meet rather than cross
+    Eigen::Index pair = 0;
+    for (std::size_t s = 0; s < pat.seams.size(); ++s) {
+      const Eigen::Index first = pair, last = pair + meshed.seam_pair_count[s] - 1;
+      for (; pair <= last; ++pair)
+        EXPECT_LT(
+            (cloth.positions.col(cloth.seam_pairs(0, pair)) - cloth.positions.col(cloth.seam_pairs(1, pair))).norm(),
+            0.45f)
+            << file << " seam " << s;
+      auto gap = [&](Eigen::Index i, Eigen::Index j) {
+        return (cloth.positions.col(cloth.seam_pairs(0, i)) - cloth.positions.col(cloth.seam_pairs(1, j))).norm();
+      };
+      if (last > first) {
+        EXPECT_LE(gap(first, first) + gap(last, last), gap(first, last) + gap(last, first)) << file << " seam " << s;
+      }
+    }
     // and near it: every vertex within 25 cm of the body's box
     const Box3 c = bounding_box(cloth.positions);
     const float margin = std::string(file) == "tablecloth" ? 0.4f : 0.25f;  // 1 m square over a 0.4 m deep body
