@@ -18,8 +18,8 @@ namespace clothbench {
 namespace {
 
 const std::string kGarments = std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/garments/";
-const char* const kFiles[] = {"shirt",    "shirt_sleeves",      "skirt",     "dress", "dress_sleeves",
-                              "trousers", "durupinar_trousers", "tablecloth"};
+const char* const kFiles[] = {"shirt",    "shirt_sleeves",      "skirt",           "dress",     "dress_sleeves",
+                              "trousers", "durupinar_trousers", "durupinar_skirt", "tablecloth"};
 const char* const kGarmentCode[] = {"dress_pencil_specification", "hoody_mean_specification",
                                     "js_mean_all_specification", "shirt_mean_specification"};
 
@@ -134,7 +134,7 @@ TEST(GarmentFiles, PaperVertexCountsWithinFivePercent) {
       {"trousers", 600, {150, 150, 150, 150}},
       {"shirt_sleeves", 816, {272, 272, 136, 136}},
       {"dress_sleeves", 2300, {}},
-      {"skirt", 1400, {}},
+      {"durupinar_skirt", 1400, {}},
       {"durupinar_trousers", 2774, {}},
   };
   for (const auto& c : counts) {
@@ -151,7 +151,7 @@ TEST(GarmentFiles, PaperVertexCountsWithinFivePercent) {
 
 TEST(GarmentFiles, DurupinarSeamPairs) {
   // Durupinar Figure 6: a skirt of 1,400 vertices with 61 seams, trousers of 2,774 with 140
-  const std::tuple<const char*, int, int> cases[] = {{"skirt", 1400, 61}, {"durupinar_trousers", 2774, 140}};
+  const std::tuple<const char*, int, int> cases[] = {{"durupinar_skirt", 1400, 61}, {"durupinar_trousers", 2774, 140}};
   for (const auto& [file, vertices, pairs] : cases) {
     const MeshedPattern m = mesh_to(load_pattern(kGarments + file + ".pattern"), vertices);
     EXPECT_NEAR(m.mesh.seam_pairs.cols(), pairs, 0.05 * pairs) << file;

@@ -112,8 +112,8 @@ seam front.left back.right aligned
 }
 
 TEST(PatternFile, GarmentFilesRoundTrip) {
-  for (const char* name :
-       {"shirt", "shirt_sleeves", "skirt", "dress", "dress_sleeves", "trousers", "durupinar_trousers", "tablecloth"}) {
+  for (const char* name : {"shirt", "shirt_sleeves", "skirt", "dress", "dress_sleeves", "trousers",
+                           "durupinar_trousers", "durupinar_skirt", "tablecloth"}) {
     SCOPED_TRACE(name);
     const Pattern p = load_pattern(kGarments + name + ".pattern");
     const Pattern back = parse_pattern(write_pattern(p), "written.pattern");
