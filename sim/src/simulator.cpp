@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <stdexcept>
 
 #include "clothbench/sim/mesh_query.hpp"
@@ -265,32 +266,47 @@ void Simulator::limit_velocities() {
   if (l != Limit::kVelocity && l != Limit::kVelocityZero && l != Limit::kDirectional) return;
   const Real max_len_factor = 1 + params_.threshold;
   const Vec3 v_grav = params_.gravity * dt_;  // walking Eq. 6: v_grav = g dt
+  // held points cannot catch up: attached ones and those the body holds (in contact)
+  held_.assign(static_cast<std::size_t>(x_.cols()), 0);
+  for (Eigen::Index i = 0; i < x_.cols(); ++i)
+    held_[i] = inv_m_[i] == 0 || (!contacts_.empty() && contacts_[static_cast<std::size_t>(i)].hit);
   for (int pass = 0; pass < params_.limit_passes; ++pass)
-  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
-    const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
-    // the length this step would give (Eq. 3 position update): no spring may end it over-elongated
-    const Vec3 d = x_.col(b) - x_.col(a);  // p12 = p2 - p1
-    const Vec3 d_next = d + dt_ * (v_.col(b) - v_.col(a));
-    if (!(d_next.norm() > max_len_factor * mesh_.rest_length[s])) continue;
-    const Real len = d.norm();
-    if (!(len > 0)) continue;
-    const Vec3 u = d / len;
-    const Real va = v_.col(a).dot(u), vb = v_.col(b).dot(u);
-    if (vb - va <= 0) continue;  // only further elongation is forbidden: a spring may shorten
-    Real cos_a = 0;
-    if (l == Limit::kDirectional) {
-      // walking Eq. 6: v_dir = v_grav + v_object
-      const Vec3 v_dir = v_grav + spring_object_velocity(a, b);
-      cos_a = v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
+    for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) limit_spring(l, max_len_factor, v_grav, s);
+}
+
+void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s) {
+  const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
+  // the length this step would give (Eq. 3 position update): no spring may end it over-elongated
+  const Vec3 d = x_.col(b) - x_.col(a);  // p12 = p2 - p1
+  const Vec3 d_next = d + dt_ * (v_.col(b) - v_.col(a));
+  if (!(d_next.norm() > max_len_factor * mesh_.rest_length[s])) return;
+  const Real len = d.norm();
+  if (!(len > 0)) return;
+  const Vec3 u = d / len;
+  const Real va = v_.col(a).dot(u), vb = v_.col(b).dot(u);
+  if (vb - va <= 0) return;  // only further elongation is forbidden: a spring may shorten
+  if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
+  Real na = va, nb = vb;
+  if (l == Limit::kDirectional) {
+    // walking Eq. 6: v_dir = v_grav + v_object; the rules after it pick averaging or the rear point
+    const Vec3 v_dir = v_grav + spring_object_velocity(a, b);
+    const Real cos_a = v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
+    const int rear = cos_a > 0 ? a : b;
+    if (std::abs(cos_a) >= 0.3f && held_[static_cast<std::size_t>(rear)]) {
+      // a held rear point cannot catch up: the front follows it and is held in turn (our reading)
+      na = nb = rear == a ? va : vb;
+      held_[static_cast<std::size_t>(rear == a ? b : a)] = 1;
+    } else {
+      std::tie(na, nb) = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b]);
     }
-    auto [na, nb] = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b]);
-    // an attached end keeps its velocity and the free end follows it
-    if (inv_m_[a] == 0 && inv_m_[b] == 0) continue;
-    if (inv_m_[a] == 0) na = nb = va;
-    if (inv_m_[b] == 0) na = nb = vb;
-    col(v_, a) += (na - va) * u;
-    col(v_, b) += (nb - vb) * u;
+  } else {
+    std::tie(na, nb) = limit_stretch_velocity(l, va, vb, 0, m_[a], m_[b]);
   }
+  // an attached end keeps its velocity and the free end follows it
+  if (inv_m_[a] == 0) na = nb = va;
+  if (inv_m_[b] == 0) na = nb = vb;
+  col(v_, a) += (na - va) * u;
+  col(v_, b) += (nb - vb) * u;
 }
 
 Vec3 Simulator::spring_object_velocity(int a, int b) const {

@@ -93,7 +93,10 @@ Vec3 collision_response(const Vec3& v, const Contact& contact, Real friction, Re
 /// (walking Eq. 5), kDirectional averages when |cos_alpha| < 0.3 and otherwise gives the rear point
 /// the front one's component (walking Eq. 6 rules; cos_alpha > 0: the rear point is p1).
 /// Averages are weighted by the end masses wa, wb (equal in the papers). Other limits return
-/// (va, vb) unchanged.
+/// (va, vb) unchanged. The Simulator adds one rule of ours to kDirectional: a rear point that is
+/// held (attached, in contact with the body, or already following a held point this iteration)
+/// cannot catch up, so the front follows it instead; taken literally the rule diverges on a
+/// hanging cloth (measured in tests/sim).
 std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1,
                                              Real wb = 1);
 
@@ -156,6 +159,7 @@ class Simulator {
   void add_reaction_forces();
   void integrate_velocities();
   void limit_velocities();
+  void limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s);
   Vec3 spring_object_velocity(int a, int b) const;
   void attract_seams();
   void respond();
@@ -175,6 +179,7 @@ class Simulator {
   Points3 mid_;        // quad midpoints [m] (3 x nq)
   std::vector<Contact> contacts_;
   std::vector<std::uint8_t> merged_;   // per seam pair
+  std::vector<std::uint8_t> held_;     // per vertex, directional limit: attached, in contact, or following one
   std::vector<int> attach_tri_;        // per attached vertex
   Points3 attach_bary_;                // (3 x na)
   Points3 attach_offset_;              // attached vertex minus its binding point [m] (3 x na)
