@@ -77,6 +77,14 @@ std::string ExperimentContext::path(const std::string& relative) const {
   return p.string();
 }
 
+std::string ExperimentContext::folder(const std::string& relative) const {
+  const std::filesystem::path p = std::filesystem::path(out_dir_) / relative;
+  std::error_code ec;
+  std::filesystem::create_directories(p, ec);
+  if (ec) throw InputError(p.string() + ": cannot create the output folder: " + ec.message());
+  return p.lexically_normal().string();
+}
+
 void ExperimentContext::write(const std::string& id, const std::string& title, const std::string& body) {
   const nlohmann::json context = machine_context();
   std::ostringstream md;
@@ -117,6 +125,7 @@ const std::vector<Experiment>& experiments() {
     add_dressing_experiments(e);
     add_walking_experiments(e);
     add_durupinar_experiments(e);
+    add_picture_experiments(e);
     return e;
   }();
   return all;

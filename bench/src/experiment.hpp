@@ -46,6 +46,8 @@ class ExperimentContext {
   bool chart(const std::string& name, nlohmann::json spec);
   /// OUT/relative, creating its folder.
   std::string path(const std::string& relative) const;
+  /// The folder OUT/relative, created.
+  std::string folder(const std::string& relative) const;
 
   bool quick() const { return quick_; }
 
@@ -71,5 +73,6 @@ const std::vector<Experiment>& experiments();
 void add_dressing_experiments(std::vector<Experiment>& out);
 void add_walking_experiments(std::vector<Experiment>& out);
 void add_durupinar_experiments(std::vector<Experiment>& out);
+void add_picture_experiments(std::vector<Experiment>& out);
 
 }  // namespace clothbench
