@@ -1,5 +1,6 @@
 // pictures: the meshed garments (results/garments) and the body maps (results/maps), drawn by the
 // `garment` and `maps` commands of this same executable so `reproduce` regenerates them too.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -22,6 +23,14 @@ std::string self() {
   return p.string();
 }
 
+std::vector<std::string> sorted_files(const std::string& dir, const std::string& extension) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == extension) out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 void command(const std::string& args) {
   const std::string line = "'" + self() + "' " + args + " > /dev/null";
   if (std::system(line.c_str()) != 0) throw InputError("picture command failed: clothbench " + args);
@@ -29,24 +38,22 @@ void command(const std::string& args) {
 
 void pictures(ExperimentContext& ctx) {
   std::vector<std::string> written;
-  // every garment file, and the GarmentCode specifications of the data root
-  for (const auto& e : fs::directory_iterator(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/garments"))
-    if (e.path().extension() == ".pattern") {
-      const std::string png = ctx.path("garments/" + e.path().stem().string() + ".png");
-      command("garment '" + e.path().string() + "' --png '" + png + "'");
-      written.push_back(png);
-    }
+  // every garment file (in name order), and the GarmentCode specifications of the data root
+  for (const auto& file : sorted_files(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/garments", ".pattern")) {
+    const std::string png = ctx.path("garments/" + fs::path(file).stem().string() + ".png");
+    command("garment '" + file + "' --png '" + png + "'");
+    written.push_back(png);
+  }
   const fs::path gc = data_path("garments/garmentcode");
   std::error_code ec;
   if (fs::is_directory(gc, ec))
-    for (const auto& e : fs::directory_iterator(gc))
-      if (e.path().extension() == ".json") {
-        std::string stem = e.path().stem().string();
-        stem = stem.substr(0, stem.rfind("_specification"));
-        const std::string png = ctx.path("garments/garmentcode_" + stem + ".png");
-        command("garment '" + e.path().string() + "' --png '" + png + "'");
-        written.push_back(png);
-      }
+    for (const auto& file : sorted_files(gc.string(), ".json")) {
+      std::string stem = fs::path(file).stem().string();
+      stem = stem.substr(0, stem.rfind("_specification"));
+      const std::string png = ctx.path("garments/garmentcode_" + stem + ".png");
+      command("garment '" + file + "' --png '" + png + "'");
+      written.push_back(png);
+    }
   // maps of the walking body at rest and in a walking frame (Debian's body when the data root is absent)
   const std::string walker = data_path("body/mh_female_walk.glb");
   const std::string maps = ctx.folder("maps");
@@ -62,8 +69,10 @@ void pictures(ExperimentContext& ctx) {
     const std::string rel = fs::relative(png, ctx.folder(".")).string();
     body += "![" + rel + "](" + rel + ")\n";
   }
-  for (const auto& e : fs::directory_iterator(maps))
-    if (e.path().extension() == ".png") body += "![maps/" + e.path().filename().string() + "](maps/" + e.path().filename().string() + ")\n";
+  for (const auto& file : sorted_files(maps, ".png")) {
+    const std::string name = fs::path(file).filename().string();
+    body += "![maps/" + name + "](maps/" + name + ")\n";
+  }
   ctx.write("pictures", "Garment meshes and body maps", body);
 }
 
