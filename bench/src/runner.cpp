@@ -276,7 +276,6 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
     throw InputError(located(scene.path, 0, e.what()));
   }
   sim->set_collider(dresser ? dresser.get() : collider.get());
-  if (!sim->mesh().attached.empty()) sim->attach(frame);
   r.vertices = sim->mesh().vertex_count();
   r.query_points = r.vertices + (scene.solver.face_queries ? static_cast<int>(sim->mesh().quads.cols()) : 0);
   r.dt_s = sim->dt();
@@ -285,6 +284,8 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
   // sew -> drape -> animate
   Progress progress(options.progress, options.label.empty() ? scene.name + "/" + scene.collider : options.label);
   sew(scene, *sim, progress, options.trace, r);
+  // attachments (Durupinar 3.2) bind where sewing left the waistband, before gravity comes on
+  if (!sim->mesh().attached.empty()) sim->attach(frame);
   if (!sim->divergence()) drape(scene, *sim, progress, r.drape);
   if (!sim->divergence())
     animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options.on_frame, r);

@@ -125,7 +125,6 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   const Real auto_k = np ? m_.sum() / Real(np) * omega * omega : Real(0);
   seam_k_ = Scalars::Constant(np, params_.seam_stiffness > 0 ? params_.seam_stiffness : auto_k);
   inv_m_ = m_.cwiseInverse();
-  for (auto a : mesh_.attached) inv_m_[a] = 0;
   x_ = mesh_.positions;
   v_ = Points3::Zero(3, nv);
   f_ = Points3::Zero(3, nv);
@@ -431,7 +430,8 @@ bool Simulator::check_divergence() {
 }
 
 void Simulator::attach(const BodyFrame& body) {
-  // bind each attached vertex to its closest body triangle (Durupinar 3.2)
+  // bind each attached vertex to its closest body triangle (Durupinar 3.2); from now on it is
+  // moved by the body only (1/m = 0)
   attach_tri_.clear();
   attach_bary_.resize(3, static_cast<Eigen::Index>(mesh_.attached.size()));
   attach_offset_.resize(3, attach_bary_.cols());
@@ -440,6 +440,8 @@ void Simulator::attach(const BodyFrame& body) {
     attach_tri_.push_back(cp.triangle);
     attach_bary_.col(static_cast<Eigen::Index>(i)) = cp.bary;
     attach_offset_.col(static_cast<Eigen::Index>(i)) = x_.col(mesh_.attached[i]) - cp.point;
+    inv_m_[mesh_.attached[i]] = 0;
+    v_.col(mesh_.attached[i]).setZero();
   }
 }
 

@@ -115,7 +115,8 @@ class Simulator {
   /// One iteration (Eq. 3 plus limits, seaming and response). Returns false once diverged.
   bool step();
 
-  /// Binds the mesh's `attached` vertices to their closest triangles of `body` (Durupinar 3.2).
+  /// Binds the mesh's `attached` vertices to their closest triangles of `body` (Durupinar 3.2);
+  /// until then they move freely (so sewing can first bring a waistband to the body).
   void attach(const BodyFrame& body);
   /// Moves attached vertices with the body (same topology as in attach()).
   void follow_attachments(const BodyFrame& body);
