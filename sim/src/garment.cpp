@@ -87,7 +87,9 @@ PanelGrid grid_panel(const Panel& p, double h) {
   for (const auto& q : p.outline) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
   const int nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / h)) + 3;
   const int ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / h)) + 3;
-  const Vec2d origin = lo - Vec2d(h, h);
+  // the grid is centred on the outline's box, so mirrored panels get mirrored vertices and their
+  // seams pair vertex for vertex
+  const Vec2d origin = 0.5 * (lo + hi) - 0.5 * h * Vec2d(nx - 1, ny - 1);
   auto node = [&](int i, int j) -> Vec2d { return origin + h * Vec2d(i, j); };
   std::vector<int> in(static_cast<std::size_t>(nx * ny), 0);
   for (int j = 0; j < ny; ++j)
@@ -294,9 +296,15 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach) {
     const auto m = match_runs(grids[static_cast<std::size_t>(s.panel_a)].edge_vertices[static_cast<std::size_t>(s.edge_a)],
                               grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)],
                               s.reversed);
-    out.seam_pair_count.push_back(static_cast<int>(m.size()));
-    for (const auto& pr : m)
-      pairs.push_back({pr[0] + offset[static_cast<std::size_t>(s.panel_a)], pr[1] + offset[static_cast<std::size_t>(s.panel_b)]});
+    // a vertex never pairs with itself (the shared tip of a dart)
+    int count = 0;
+    for (const auto& pr : m) {
+      const int a = pr[0] + offset[static_cast<std::size_t>(s.panel_a)], b = pr[1] + offset[static_cast<std::size_t>(s.panel_b)];
+      if (a == b) continue;
+      pairs.push_back({a, b});
+      ++count;
+    }
+    out.seam_pair_count.push_back(count);
   }
   out.mesh.seam_pairs.resize(2, static_cast<Eigen::Index>(pairs.size()));
   for (std::size_t i = 0; i < pairs.size(); ++i) out.mesh.seam_pairs.col(static_cast<Eigen::Index>(i)) << pairs[i][0], pairs[i][1];
