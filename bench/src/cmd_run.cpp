@@ -13,7 +13,7 @@ namespace clothbench::cli {
 namespace {
 
 struct RunArgs {
-  std::string scene, collider, json, png;
+  std::string scene, collider, json, png, gltf;
   std::vector<std::string> sets;
   bool quiet = false;
 };
@@ -62,6 +62,7 @@ int run(const RunArgs& a) {
     for (View v : {View::kFront, View::kSide, View::kBack}) views.push_back(render_dressed(r.final_body, r.mesh, 480, v));
     side_by_side(views).write_png(a.png);
   }
+  if (!a.gltf.empty()) export_dressed(a.gltf, r.final_body, r.mesh);
   return r.divergence ? 3 : 0;
 }
 
@@ -75,6 +76,7 @@ void add_run_command(CLI::App& app, Action& action) {
   cmd->add_option("--set", args->sets, "override a scene field: section.key=value (repeatable)");
   cmd->add_option("--json", args->json, "write the result as JSON (Google Benchmark layout)");
   cmd->add_option("--png", args->png, "write a picture of the dressed body (front, side, back)");
+  cmd->add_option("--gltf", args->gltf, "export the dressed body as binary glTF (.glb)");
   cmd->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   cmd->callback([&action, args] { action = [args] { return run(*args); }; });
 }

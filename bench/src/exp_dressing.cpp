@@ -67,6 +67,8 @@ void dressing_t1(ExperimentContext& ctx) {
              accuracy_cells(r), r.converged ? "yes" : "no"});
       ctx.add_row(result_row(r, std::string("dressing-t1/") + g.product + "/" + c));
       if (c == "is-cpu") picture(ctx, r, std::string("dressing-t1-") + g.product);
+      if (c == "is-cpu" && g.product == std::string("dress"))
+        export_dressed(ctx.path("pictures/dressing-t1-dress.glb"), r.final_body, r.mesh);
     }
     const auto& wp = paper::kWalkingT1[g.product == std::string("shirt") ? 0 : 2];
     const auto& wo = paper::kWalkingT1[g.product == std::string("shirt") ? 1 : 3];

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "clothbench/io/gltf_export.hpp"
+
 namespace clothbench {
 
 namespace {
@@ -111,6 +113,36 @@ Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, 
     raster.triangle(x.col(cloth.quads(0, q)), x.col(cloth.quads(2, q)), x.col(cloth.quads(3, q)), c);
   }
   return image;
+}
+
+void export_dressed(const std::string& path, const BodyFrame& body, const ClothMesh& cloth) {
+  std::vector<ExportMesh> meshes{{"body", body.positions, body.triangles, {0.78f, 0.75f, 0.71f}}};
+  const int panels = std::max<int>(1, static_cast<int>(cloth.panel_names.size()));
+  for (int p = 0; p < panels; ++p) {
+    // the panel's quads as triangles, vertices renumbered
+    std::vector<int> index(static_cast<std::size_t>(cloth.positions.cols()), -1);
+    std::vector<int> used, tris;
+    for (Eigen::Index q = 0; q < cloth.quads.cols(); ++q) {
+      if (!cloth.panel.empty() && cloth.panel[cloth.quads(0, q)] != p) continue;
+      for (int k : {0, 1, 2, 0, 2, 3}) {
+        int& i = index[static_cast<std::size_t>(cloth.quads(k, q))];
+        if (i < 0) {
+          i = static_cast<int>(used.size());
+          used.push_back(cloth.quads(k, q));
+        }
+        tris.push_back(i);
+      }
+    }
+    ExportMesh m;
+    m.name = p < static_cast<int>(cloth.panel_names.size()) ? cloth.panel_names[p] : "cloth";
+    m.positions.resize(3, static_cast<Eigen::Index>(used.size()));
+    for (std::size_t i = 0; i < used.size(); ++i) m.positions.col(static_cast<Eigen::Index>(i)) = cloth.positions.col(used[i]);
+    m.triangles = Eigen::Map<const Tris>(tris.data(), 3, static_cast<Eigen::Index>(tris.size() / 3));
+    const Rgb c = panel_colour(p);
+    m.colour = {c.r / 255.f, c.g / 255.f, c.b / 255.f};
+    meshes.push_back(std::move(m));
+  }
+  export_gltf(path, meshes);
 }
 
 Image side_by_side(const std::vector<Image>& images) {
