@@ -1,4 +1,5 @@
 // clothbench reproduce [--only ID,...] [--out DIR] [--quick] [--repetitions N]
+#include <cstdio>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -57,7 +58,9 @@ int reproduce(const ReproduceArgs& a) {
     if (!found) throw InputError("--only: unknown experiment '" + id + "' (known: " + known + ")");
   }
   ExperimentContext ctx(a.out, a.quick, a.repetitions);
-  write_text_file(ctx.path(".write-test"), "");  // fail early on an unwritable output folder
+  // fail early on an unwritable output folder
+  write_text_file(ctx.path(".write-test"), "");
+  std::remove(ctx.path(".write-test").c_str());
   std::vector<std::pair<std::string, double>> done;
   for (const auto& e : experiments()) {
     if (!wanted.empty() && !wanted.count(e.id)) continue;
@@ -67,7 +70,6 @@ int reproduce(const ReproduceArgs& a) {
     done.emplace_back(e.id, clock.ms() / 1e3);
     std::cerr << "[" << e.id << "] done in " << num(clock.ms() / 1e3, 1) << " s\n";
   }
-  std::remove(ctx.path(".write-test").c_str());
   if (wanted.empty()) write_index(a.out, done, a.quick);
   return 0;
 }

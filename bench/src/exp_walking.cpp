@@ -100,7 +100,7 @@ void walking_f8(ExperimentContext& ctx) {
                                             r.divergence->reason + ")"
                                       : "ok";
     const auto end_value = [&](double v) { return r.divergence ? std::string("-") : num(100 * v, 1); };
-    t.row({limit, "5 %", num(100 * r.animate_strain_max, 1), end_value(r.strain_max), end_value(r.strain_p99),
+    t.row({limit, "5 %", r.frames ? num(100 * r.animate_strain_max, 1) : "-", end_value(r.strain_max), end_value(r.strain_p99),
            r.divergence ? "-" : num(100 * lag(r, Vec3::UnitX()), 1),
            r.divergence ? "-" : num(r.accuracy.inside_pct, 2), status});
     ctx.add_row(result_row(r, std::string("walking-f8/tablecloth/") + limit));

@@ -251,7 +251,9 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
 
 }  // namespace
 
-RunResult run_scene(const Scene& scene, const RunOptions& options) {
+namespace {
+
+RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   RunResult r;
   r.scene = scene.name;
   r.collider = scene.collider;
@@ -298,6 +300,19 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
   r.mesh = sim->mesh();
   r.mesh.positions = sim->positions();
   return r;
+}
+
+}  // namespace
+
+RunResult run_scene(const Scene& scene, const RunOptions& options) {
+  try {
+    return run_unchecked(scene, options);
+  } catch (const InputError& e) {
+    // every input error of a run names the scene first, then what it referred to
+    const std::string what = e.what();
+    if (scene.path.empty() || what.rfind(scene.path, 0) == 0) throw;
+    throw InputError(scene.path + ": " + what);
+  }
 }
 
 }  // namespace clothbench

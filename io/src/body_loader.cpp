@@ -325,6 +325,10 @@ BodyModel load_body(const std::string& path, const BodyLoadOptions& options) {
   weld(soup, *m);
   if (m->rest.triangles.cols() == 0) throw InputError(located(path, 0, "has only degenerate triangles"));
   if (!m->rest.positions.allFinite()) throw InputError(located(path, 0, "has non-finite vertex coordinates"));
+  // no unit makes a body span more than 1e6 (1000 km in metres, 1 km in millimetres); squares of
+  // such numbers overflow float geometry
+  if (m->rest.positions.cwiseAbs().maxCoeff() > 1e6f)
+    throw InputError(located(path, 0, "has enormous vertex coordinates (|x| > 1e6 in the file's units)"));
   if (options.drop_open_parts) drop_open_parts(*m);
   find_bones_and_root(*m);
   read_animations(*scene, *m);
