@@ -10,7 +10,7 @@ PACKAGES := cmake g++ make pkg-config libeigen3-dev libfcl-dev libembree-dev lib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 CTEST_FLAGS ?= --output-on-failure -LE 'slow|benchmark'
 
-.PHONY: reproduce test deps configure build quick clean
+.PHONY: reproduce test test-sanitize deps configure build quick clean
 
 reproduce: build
 	$(BUILD)/bin/clothbench reproduce --out results
@@ -20,6 +20,10 @@ quick: build
 
 test: build
 	cd $(BUILD) && ctest $(CTEST_FLAGS) -j$(JOBS)
+
+# AddressSanitizer + UndefinedBehaviorSanitizer build and test run (not part of CI: about 3x slower)
+test-sanitize:
+	$(MAKE) test BUILD=build-sanitize CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLOTHBENCH_SANITIZE=ON"
 
 # install only what is missing (dpkg-query says which)
 deps:
