@@ -74,5 +74,6 @@ void add_dressing_experiments(std::vector<Experiment>& out);
 void add_walking_experiments(std::vector<Experiment>& out);
 void add_durupinar_experiments(std::vector<Experiment>& out);
 void add_picture_experiments(std::vector<Experiment>& out);
+void add_stability_experiments(std::vector<Experiment>& out);
 
 }  // namespace clothbench

@@ -66,9 +66,10 @@ class BodySource {
       }
       return;
     }
+    // at rest while dressing (t = 0), moving at constant velocity during the animation
     out = sphere_;
     out.positions.colwise() += sphere_center(t);
-    if (t > 0 || moves()) {
+    if (t > 0) {
       out.velocities.colwise() = spec_.velocity;
       out.moving = true;
     }
@@ -200,7 +201,7 @@ bool advance_frame(const BodySource& source, double t, long steps, Simulator& si
 
 // the lead-in (dress_at_s -> start_s, with the dressing collider, not measured), then the measured window
 void animate(const Scene& scene, const BodySource& source, Simulator& sim, Collider& collider, Collider& dresser,
-             BodyFrame& frame, Progress& progress, const FrameCallback& on_frame, RunResult& r) {
+             BodyFrame& frame, Progress& progress, const RunOptions& options, RunResult& r) {
   if (!source.moves()) return;
   sim.set_phase(Phase::kAnimate);
   const double frame_dt = 1.0 / scene.body.fps;
@@ -224,7 +225,12 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     alive = advance_frame(source, t, steps, sim, collider, frame, r.skinning_ms);
     ++r.frames;
     r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
-    if (on_frame) on_frame(f, t, frame, sim);
+    if (options.measure_frames && alive) {
+      const Accuracy a = Oracle(frame).measure(sim.positions());
+      r.animate_inside_max_pct = std::max(r.animate_inside_max_pct, a.inside_pct);
+      r.animate_depth_max_mm = std::max(r.animate_depth_max_mm, a.depth_max_mm);
+    }
+    if (options.on_frame) options.on_frame(f, t, frame, sim);
     progress.report("animate: frame %ld of %ld (t = %.2f s)", f, frames, t);
   }
   r.animate.reached = alive && r.frames == frames;
@@ -290,7 +296,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   if (!sim->mesh().attached.empty()) sim->attach(frame);
   if (!sim->divergence()) drape(scene, *sim, progress, r.drape);
   if (!sim->divergence())
-    animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options.on_frame, r);
+    animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options, r);
   r.divergence = sim->divergence();
   r.threads = collider->stats().threads;
   r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&

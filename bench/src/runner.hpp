@@ -45,6 +45,8 @@ struct RunResult {
   double strain_max = 0, strain_p99 = 0;
   double kinetic_energy = 0;
   double animate_strain_max = 0;///< largest structural strain seen at any animation frame
+  double animate_inside_max_pct = 0;  ///< RunOptions::measure_frames: most cloth inside the body at any frame [%]
+  double animate_depth_max_mm = 0;    ///< RunOptions::measure_frames: deepest penetration at any frame [mm]
   std::vector<float> sew_iteration_ms;  ///< wall time of every sew iteration (RunOptions::trace)
   bool converged = false;       ///< sewn (when sewing) and settled
   std::optional<Divergence> divergence;
@@ -67,6 +69,7 @@ struct RunOptions {
   std::string label;      ///< prefix of progress lines
   bool trace = false;     ///< record the wall time of every sew iteration
   FrameCallback on_frame; ///< optional, per animation frame
+  bool measure_frames = false;  ///< oracle accuracy at every animation frame (animate_*_max)
 };
 
 /// Runs the scene with its collider. Throws InputError for bad input (files, parameters);

@@ -39,6 +39,19 @@ TEST(Runner, MovingSphereIsAnimatedAndMeasured) {
   EXPECT_LE(r.dt_s, r.dt_bound_s);
 }
 
+// the sphere's velocity applies to the animation only: dressing sees a body at rest
+TEST(Runner, MovingSphereRestsWhileDressing) {
+  RunOptions quiet;
+  quiet.progress = false;
+  Scene still = small_tablecloth(), fast = small_tablecloth();
+  still.body.move_s = fast.body.move_s = 0;
+  still.body.velocity = Vec3::Zero();
+  fast.body.velocity = Vec3(5, 0, 0);
+  const RunResult a = run_scene(still, quiet), b = run_scene(fast, quiet);
+  ASSERT_EQ(a.mesh.positions.size(), b.mesh.positions.size());
+  EXPECT_EQ(0, std::memcmp(a.mesh.positions.data(), b.mesh.positions.data(), sizeof(Real) * a.mesh.positions.size()));
+}
+
 TEST(Runner, DivergenceIsReportedNotThrown) {
   Scene s = small_tablecloth();
   s.solver.allow_unstable_dt = true;

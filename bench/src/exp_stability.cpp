@@ -1,0 +1,182 @@
+// stability: where each method fails — time step beyond the Eq. 4 bound, a sphere too fast for the
+// collider (tunnelling), map size against thin body parts, the side layer, tol.
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "clothbench/io/body_loader.hpp"
+#include "clothbench/io/data_root.hpp"
+#include "experiment.hpp"
+#include "registry.hpp"
+#include "report.hpp"
+
+namespace clothbench {
+
+namespace {
+
+constexpr double kInsideLimitPct = 5;   // a run fails when more of the cloth ends inside the body
+constexpr double kMissLimitPct = 1;     // a map fails a body part when it misses more contacts
+const char* const kTablecloth = "walking/tablecloth_sphere.toml";
+
+std::string verdict(const RunResult& r, double strain_limit) {
+  if (r.divergence) return "diverged (it " + std::to_string(r.divergence->iteration) + ")";
+  if (r.accuracy.inside_pct > kInsideLimitPct) return "inside " + num(r.accuracy.inside_pct, 1) + " %";
+  if (r.strain_max > strain_limit) return "strain " + num(100 * r.strain_max, 0) + " %";
+  return "ok";
+}
+
+// (a) dt as a multiple of the Eq. 4 bound, per super-elasticity limit, tablecloth on a static sphere
+std::string dt_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
+  const std::vector<double> multiples{0.5, 0.75, 1.0, 1.25, 1.5, 2.0, 3.0};
+  const std::vector<std::string> base{"body.move_s=0", "stop.drape_max_s=1.0", "garment.vertices=400"};
+  std::vector<std::string> probe = base;
+  probe.push_back("stop.max_iterations=1");
+  const double bound = ctx.run(kTablecloth, "sphere", probe).dt_bound_s;
+  MarkdownTable t({"limit", "largest stable dt / Eq. 4 bound", "first failure"});
+  std::ostringstream detail;
+  for (const char* limit : {"none", "velocity", "position", "directional"}) {
+    double stable = 0;
+    std::string failure = "none up to 3x";
+    std::vector<double> x, y;
+    for (double m : multiples) {
+      std::vector<std::string> sets = base;
+      sets.insert(sets.end(), {std::string("solver.limit=") + limit, "solver.allow_unstable_dt=true",
+                               "solver.dt=" + std::to_string(m * bound)});
+      const RunResult& r = ctx.run(kTablecloth, "sphere", sets);
+      ctx.add_row(result_row(r, std::string("stability/dt/") + limit + "/" + num(m, 2)));
+      const std::string v = verdict(r, 0.5);
+      if (v == "ok" && failure == "none up to 3x") stable = m;
+      if (v != "ok" && failure == "none up to 3x") failure = num(m, 2) + "x: " + v;
+      x.push_back(m);
+      y.push_back(r.divergence ? 1.0 : 0.0);
+    }
+    t.row({limit, stable > 0 ? num(stable, 2) + "x" : "< 0.5x", failure});
+    series.push_back({{"label", std::string("dt: ") + limit}, {"x", x}, {"y", y}});
+  }
+  return "### Time step (tablecloth, 400 vertices, static sphere; Eq. 4 bound " + num(1e3 * bound, 3) +
+         " ms; failure: diverged, > " + num(kInsideLimitPct, 0) + " % inside, or strain > 50 %)\n\n" + t.str();
+}
+
+// (b) tunnelling: the sphere moves at increasing speed under the cloth, per collider. The papers'
+// response only changes velocities, so some cloth sinks even with the exact analytic sphere; a
+// collider fails at a speed when, at some frame, more of the cloth is inside the sphere than with
+// the analytic one by over kInsideLimitPct points (or the run diverges).
+std::string speed_boundaries(ExperimentContext& ctx) {
+  const std::vector<double> speeds{0.5, 1, 2, 4, 8};
+  MarkdownTable t({"collider", "largest speed without failure [m/s]", "first failure",
+                   "max inside % during motion at each speed"});
+  std::vector<std::string> colliders = ctx.colliders({"is-cpu", "is-gl", "fcl", "embree"});
+  colliders.insert(colliders.begin(), "sphere");
+  RunOptions per_frame;
+  per_frame.measure_frames = true;
+  std::vector<double> reference;
+  for (const auto& c : colliders) {
+    double ok_speed = 0;
+    std::string failure = "none up to 8 m/s", insides;
+    for (std::size_t i = 0; i < speeds.size(); ++i) {
+      const std::vector<std::string> sets{"garment.vertices=400", "solver.limit=velocity", "body.move_s=0.4",
+                                          "stop.drape_max_s=0.6", "body.velocity=[" + std::to_string(speeds[i]) + ", 0, 0]"};
+      const RunResult& r = ctx.run(kTablecloth, c, sets, per_frame);
+      ctx.add_row(result_row(r, "stability/speed/" + c + "/" + num(speeds[i], 1)));
+      if (c == "sphere") reference.push_back(r.animate_inside_max_pct);
+      const bool failed = r.divergence || r.animate_inside_max_pct > reference[i] + kInsideLimitPct;
+      insides += (insides.empty() ? "" : ", ") + (r.divergence ? std::string("div") : num(r.animate_inside_max_pct, 1));
+      if (!failed && failure == "none up to 8 m/s") ok_speed = speeds[i];
+      if (failed && failure == "none up to 8 m/s")
+        failure = num(speeds[i], 1) + " m/s: " + (r.divergence ? "diverged" : num(r.animate_inside_max_pct, 1) + " % inside");
+    }
+    t.row({c, ok_speed > 0 ? num(ok_speed, 1) : "< 0.5", failure, insides});
+  }
+  return "\n### Sphere speed (tablecloth, 400 vertices, velocity limit, speeds 0.5, 1, 2, 4, 8 m/s for 0.4 s; the oracle "
+         "measures every frame; failure: more of the cloth inside than with the analytic sphere by over " +
+         num(kInsideLimitPct, 0) + " points at some frame, or diverged)\n\n" + t.str();
+}
+
+// the share of exact contacts a collider misses, per body region: body vertices moved 2 mm out
+// along their normal (all within tol, so all should hit)
+struct Misses {
+  double torso = 0, arms = 0, hands = 0, legs = 0;
+};
+
+Misses measure_misses(const BodyFrame& body, const std::string& collider, const ColliderOptions& o) {
+  auto c = make_collider(collider, o);
+  c->set_body(body);
+  const Points3 p = body.positions + 0.002f * body.normals;
+  std::vector<Contact> out(static_cast<std::size_t>(p.cols()));
+  c->query(PointsView(p), ContactsOut{out.data(), out.size()});
+  double miss[4] = {}, total[4] = {};
+  for (Eigen::Index v = 0; v < p.cols(); ++v) {
+    const Real x = std::abs(body.positions(0, v)), y = body.positions(1, v);
+    const int region = y < 0.8f ? 3 : x > 0.42f ? 2 : x > 0.2f ? 1 : 0;  // legs, hands, arms, torso
+    total[region] += 1;
+    miss[region] += out[static_cast<std::size_t>(v)].hit ? 0 : 1;
+  }
+  const auto pct = [&](int r) { return total[r] > 0 ? 100 * miss[r] / total[r] : 0.0; };
+  return {pct(0), pct(1), pct(2), pct(3)};
+}
+
+std::string map_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
+  const std::vector<std::string> is = ctx.colliders({"is-cpu"});
+  if (is.empty()) return "\n### Map size: skipped (no image-space collider built)\n";
+  const BodyModel model = load_body(kDebianHumanBody);
+  const BodyFrame& body = model.rest();
+  MarkdownTable t({"map size", "side layer", "tol [mm]", "torso miss %", "arms miss %", "hands miss %", "legs miss %"});
+  std::vector<double> x, torso, arms, hands;
+  for (int size : {64, 128, 256, 320, 512, 1024})
+    for (bool side : {true, false}) {
+      ColliderOptions o;
+      o.map_size = size;
+      o.side_layer = side;
+      const Misses m = measure_misses(body, is[0], o);
+      t.row({std::to_string(size), side ? "on" : "off", "5", num(m.torso, 2), num(m.arms, 2), num(m.hands, 2), num(m.legs, 2)});
+      if (side) {
+        x.push_back(size);
+        torso.push_back(m.torso);
+        arms.push_back(m.arms);
+        hands.push_back(m.hands);
+      }
+    }
+  for (Real tol : {0.002f, 0.01f}) {
+    ColliderOptions o;
+    o.tol = tol;
+    const Misses m = measure_misses(body, is[0], o);
+    t.row({"320", "on", num(1e3 * tol, 0), num(m.torso, 2), num(m.arms, 2), num(m.hands, 2), num(m.legs, 2)});
+  }
+  series.push_back({{"label", "torso"}, {"x", x}, {"y", torso}});
+  series.push_back({{"label", "arms"}, {"x", x}, {"y", arms}});
+  series.push_back({{"label", "hands"}, {"x", x}, {"y", hands}});
+  return "\n### Map size, side layer and tol against thin parts (" + is[0] +
+         ", Debian's body at rest; every vertex moved 2 mm out along its normal must hit, side-facing surfaces "
+         "included, where the maps see the surface edge-on and only the side layer can answer; regions: legs y < 0.8 m, "
+         "hands |x| > 0.42 m, arms 0.2-0.42 m, torso; failure: more than " + num(kMissLimitPct, 0) +
+         " % missed)\n\n" + t.str() + "\n![map size](stability-maps.png)\n";
+}
+
+void stability(ExperimentContext& ctx) {
+  nlohmann::json dt_series = nlohmann::json::array(), map_series = nlohmann::json::array();
+  std::string body = dt_boundaries(ctx, dt_series);
+  body += speed_boundaries(ctx);
+  body += map_boundaries(ctx, map_series);
+  ctx.chart("stability-dt", {{"title", "Divergence vs time step (tablecloth on a sphere)"},
+                             {"xlabel", "dt / Eq. 4 bound"},
+                             {"ylabel", "diverged (1) or not (0)"},
+                             {"series", dt_series}});
+  if (!map_series.empty())
+    ctx.chart("stability-maps", {{"title", "Missed contacts vs map size (side layer on, tol 5 mm)"},
+                                 {"xlabel", "map size [pixels]"},
+                                 {"ylabel", "missed contacts [%]"},
+                                 {"logx", true},
+                                 {"series", map_series}});
+  ctx.write("stability", "Where each method fails",
+            "Boundaries of stable, accurate operation. Stated limits: a run fails when it diverges or ends with more than " +
+                num(kInsideLimitPct, 0) + " % of its points inside the body; a map fails a body part when it misses more than " +
+                num(kMissLimitPct, 0) + " % of exact contacts.\n\n" + body + "\n![dt](stability-dt.png)\n");
+}
+
+}  // namespace
+
+void add_stability_experiments(std::vector<Experiment>& out) {
+  out.push_back({"stability", "Where each method fails", stability});
+}
+
+}  // namespace clothbench
