@@ -127,6 +127,7 @@ const std::vector<Experiment>& experiments() {
     add_durupinar_experiments(e);
     add_stability_experiments(e);
     add_picture_experiments(e);
+    add_claims_experiments(e);
     return e;
   }();
   return all;

@@ -75,5 +75,6 @@ void add_walking_experiments(std::vector<Experiment>& out);
 void add_durupinar_experiments(std::vector<Experiment>& out);
 void add_picture_experiments(std::vector<Experiment>& out);
 void add_stability_experiments(std::vector<Experiment>& out);
+void add_claims_experiments(std::vector<Experiment>& out);
 
 }  // namespace clothbench
