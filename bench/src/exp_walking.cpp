@@ -1,9 +1,11 @@
 // walking-t2 (garments on the walking body) and walking-f8 (tablecloth on a moving sphere).
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
+#include "clothbench/config.h"
 #include "clothbench/io/data_root.hpp"
 #include "experiment.hpp"
 #include "paper_figures.hpp"
@@ -21,6 +23,22 @@ bool walking_body_present(ExperimentContext& ctx, const std::string& id) {
             << " is absent (set CLOTHBENCH_DATA to the shared data root)\n";
   ctx.write(id, "skipped", "Skipped: the walking body `" + body + "` was not found. Set `CLOTHBENCH_DATA`.\n");
   return false;
+}
+
+// frames per second of a scene's animation (the video plays in real time)
+double scene_fps(ExperimentContext&, const std::string& scene) {
+  return load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
+}
+
+// an H.264 video of a numbered PNG sequence, when ffmpeg is on the PATH (skipped with a note otherwise)
+void make_video(const std::string& pattern, const std::string& mp4, double fps) {
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) {
+    std::cerr << "  note: ffmpeg not installed, no video " << mp4 << " (apt-get install ffmpeg)\n";
+    return;
+  }
+  const std::string cmd = "ffmpeg -loglevel error -y -framerate " + num(fps, 0) + " -i '" + pattern +
+                          "' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + mp4 + "'";
+  if (std::system(cmd.c_str()) != 0) std::cerr << "  warning: ffmpeg failed for " << mp4 << "\n";
 }
 
 void walking_t2(ExperimentContext& ctx) {
@@ -41,18 +59,18 @@ void walking_t2(ExperimentContext& ctx) {
     for (const auto& c : ctx.colliders({"is-gl", "is-cpu", "fcl", "embree"})) {
       std::vector<std::string> sets = sets_quick;
       sets.push_back("garment.vertices=" + std::to_string(g.vertices));
-      // the is-cpu run also leaves a frame sequence (every 10th frame, front view)
+      // the is-cpu run also leaves a frame sequence (every frame, front view) and, where Debian's
+      // ffmpeg is installed, a short video of it
       RunOptions options;
       const bool pictures = c == "is-cpu";
       const std::string stem = std::string("pictures/walking-t2-") + (i ? "dress_sleeves" : "skirt");
       if (pictures)
         options.on_frame = [&](long frame, double, const BodyFrame& body, const Simulator& sim) {
-          if (frame % 10 != 0) return;
           ClothMesh mesh = sim.mesh();
           mesh.positions = sim.positions();
           char name[32];
           std::snprintf(name, sizeof name, "-frame%03ld.png", frame);
-          render_dressed(body, mesh, 240, View::kFront).write_png(ctx.path(stem + "/" + stem.substr(9) + name));
+          render_dressed(body, mesh, 200, View::kFront).write_png(ctx.path(stem + "/" + stem.substr(9) + name));
         };
       const RunResult& r = ctx.run(g.scene, c, sets, options);
       const double frames = double(std::max(1L, r.frames));
@@ -65,6 +83,7 @@ void walking_t2(ExperimentContext& ctx) {
              r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2), num(100 * r.animate_strain_max, 1)});
       ctx.add_row(result_row(r, std::string("walking-t2/") + (i ? "dress_sleeves" : "skirt") + "/" + c));
       if (pictures) {
+        make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"), scene_fps(ctx, g.scene));
         std::vector<Image> views;
         for (View v : {View::kFront, View::kSide}) views.push_back(render_dressed(r.final_body, r.mesh, 360, v));
         side_by_side(views).write_png(ctx.path(stem + ".png"));
