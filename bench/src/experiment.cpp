@@ -126,6 +126,7 @@ const std::vector<Experiment>& experiments() {
     add_walking_experiments(e);
     add_durupinar_experiments(e);
     add_stability_experiments(e);
+    add_pareto_experiments(e);
     add_picture_experiments(e);
     add_claims_experiments(e);
     return e;
