@@ -181,7 +181,8 @@ void dressing_f8(ExperimentContext& ctx) {
   }
   ctx.chart("dressing-f8", {{"title", "Time per iteration vs cloth vertices (dress, draping)"},
                             {"xlabel", "cloth vertices"},
-                            {"ylabel", "ms per iteration"},
+                            {"ylabel", "ms per iteration (log scale)"},
+                            {"logy", true},
                             {"series", series}});
   ctx.write("dressing-f8", "Dressing paper Fig. 8: time per iteration vs cloth vertices",
             "The dress meshed at " + std::to_string(sizes.size()) + " sizes, placed and draped (gravity, no sewing) for " +
