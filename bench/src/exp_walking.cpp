@@ -53,7 +53,7 @@ void walking_t2(ExperimentContext& ctx) {
                    "maps or refit ms/frame", "cloth ms/frame (CD&R + CS)", "paper s/frame", "paper frames/s",
                    "inside [%] end", "strain max [%] (animation)"});
   std::vector<std::string> sets_quick;
-  if (ctx.quick()) sets_quick = {"body.end_s=1.1", "stop.max_iterations=60"};
+  if (ctx.quick()) sets_quick = {"body.start_s=0.1", "body.end_s=0.2", "stop.max_iterations=60"};
   for (std::size_t i = 0; i < 2; ++i) {
     const auto& g = garments[i];
     for (const auto& c : ctx.colliders({"is-gl", "is-cpu", "fcl", "embree"})) {
