@@ -10,7 +10,7 @@ PACKAGES := cmake g++ make pkg-config libeigen3-dev libfcl-dev libembree-dev lib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 CTEST_FLAGS ?= --output-on-failure -LE 'slow|benchmark'
 
-.PHONY: reproduce test test-sanitize deps configure build quick clean
+.PHONY: reproduce test test-sanitize fuzz deps configure build quick clean
 
 reproduce: build
 	$(BUILD)/bin/clothbench reproduce --out results
@@ -24,6 +24,29 @@ test: build
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run (not part of CI: about 3x slower)
 test-sanitize:
 	$(MAKE) test BUILD=build-sanitize CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLOTHBENCH_SANITIZE=ON"
+
+# libFuzzer targets (fuzz/) built with clang + ASan + UBSan in build-fuzz; each runs FUZZ_SECONDS,
+# new inputs go to build-fuzz/corpus, crashes to build-fuzz/artifacts; exit 1 on any finding
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS := scene pattern garmentcode
+FUZZ_CMAKE_FLAGS := -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+  -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" \
+  -DCLOTHBENCH_BUILD_FUZZ=ON -DCLOTHBENCH_BUILD_TESTS=OFF -DCLOTHBENCH_BUILD_BENCHMARKS=OFF \
+  -DCLOTHBENCH_WITH_FCL=OFF -DCLOTHBENCH_WITH_EMBREE=OFF
+
+fuzz: deps
+	$(MAKE) deps PACKAGES=clang
+	cmake -S . -B $(FUZZ_BUILD) $(FUZZ_CMAKE_FLAGS)
+	cmake --build $(FUZZ_BUILD) -j$(JOBS) --target $(FUZZ_TARGETS:%=%_fuzz)
+	@failed=0; for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$t $(FUZZ_BUILD)/artifacts; \
+	  $(FUZZ_BUILD)/bin/$${t}_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -print_final_stats=1 \
+	    -artifact_prefix=$(FUZZ_BUILD)/artifacts/$$t- $(FUZZ_BUILD)/corpus/$$t fuzz/corpus/$$t > $(FUZZ_BUILD)/fuzz-$$t.log 2>&1; \
+	  rc=$$?; [ $$rc = 0 ] || failed=1; \
+	  echo "$$t: $$(sed -n 's/^stat::number_of_executed_units: *//p' $(FUZZ_BUILD)/fuzz-$$t.log) executions in $(FUZZ_SECONDS) s," \
+	    "$$(ls $(FUZZ_BUILD)/corpus/$$t | wc -l) inputs found so far, exit $$rc (log: $(FUZZ_BUILD)/fuzz-$$t.log)"; \
+	done; exit $$failed
 
 # install only what is missing (dpkg-query says which)
 deps:
