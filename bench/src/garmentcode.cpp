@@ -12,6 +12,7 @@
 
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
+#include "pattern_file.hpp"
 
 namespace clothbench {
 
@@ -142,7 +143,7 @@ Vec2d rel_to_abs(const Vec2d& a, const Vec2d& b, const Vec2d& rel) {
 }
 
 // Points of the circle arc from a to b with radius r (pygarment CircleEdge from_points_radius),
-// excluding a, including b.
+// excluding a, including b; none when the arc needs more than kMaxOutlinePoints chords.
 std::vector<Vec2d> flatten_arc(const Vec2d& a, const Vec2d& b, double r, bool large_arc, bool right) {
   const Vec2d chord = b - a;
   const double d = chord.norm();
@@ -157,7 +158,9 @@ std::vector<Vec2d> flatten_arc(const Vec2d& a, const Vec2d& b, double r, bool la
   const double a0 = angle(a), ccw_end = ccw(angle(b) - a0);
   const double sweep = ccw(angle(mid) - a0) < ccw_end ? ccw_end : ccw_end - 2 * M_PI;
   const double radius = (a - centre).norm();
-  const int n = std::max(2, static_cast<int>(std::ceil(std::abs(sweep) * radius / kChordCm)));
+  const double chords = std::ceil(std::abs(sweep) * radius / kChordCm);
+  if (!(chords <= kMaxOutlinePoints)) return {};
+  const int n = std::max(2, static_cast<int>(chords));
   std::vector<Vec2d> out;
   for (int k = 1; k < n; ++k) {
     const double t = a0 + sweep * k / n;
@@ -356,6 +359,8 @@ class Converter {
       auto pts = edge_points(ej, ep, verts[static_cast<std::size_t>(ab[0])], verts[static_cast<std::size_t>(ab[1])]);
       if (e + 1 == es.size()) pts.pop_back();  // the loop's end is its start
       p.outline.insert(p.outline.end(), pts.begin(), pts.end());
+      if (p.outline.size() > static_cast<std::size_t>(kMaxOutlinePoints))
+        fail(ep, "outline of panel '" + name + "' has more than " + std::to_string(kMaxOutlinePoints) + " points");
     }
     if (ends.back()[1] != ends.front()[0])
       fail(base + "/edges",
@@ -378,8 +383,10 @@ class Converter {
       if (params.size() != 3) fail(ep + "/curvature/params", "circle params must be [radius, large_arc, right]");
       const double r = to_cm_ * number(params, ep + "/curvature/params/0");
       if (!(r > 0)) fail(ep + "/curvature/params/0", "circle radius must be > 0");
-      return flatten_arc(a, b, r, number(params, ep + "/curvature/params/1") != 0,
-                         number(params, ep + "/curvature/params/2") != 0);
+      auto arc = flatten_arc(a, b, r, number(params, ep + "/curvature/params/1") != 0,
+                             number(params, ep + "/curvature/params/2") != 0);
+      if (arc.empty()) fail(ep, "circle arc longer than " + std::to_string(kMaxOutlinePoints) + " cm");
+      return arc;
     }
     const std::size_t n = type == "quadratic" ? 1 : type == "cubic" ? 2 : 0;
     if (n == 0)
@@ -393,7 +400,9 @@ class Converter {
     }
     double len = (controls.front() - a).norm() + (b - controls.back()).norm();
     for (std::size_t k = 1; k < controls.size(); ++k) len += (controls[k] - controls[k - 1]).norm();
-    return flatten_bezier(a, controls, b, std::max(2, static_cast<int>(std::ceil(len / kChordCm))));
+    const double chords = std::ceil(len / kChordCm);
+    if (!(chords <= kMaxOutlinePoints)) fail(ep, "curve longer than " + std::to_string(kMaxOutlinePoints) + " cm");
+    return flatten_bezier(a, controls, b, std::max(2, static_cast<int>(chords)));
   }
 
   // translation height as a fraction of the reference body; x, z as cm from its box centre

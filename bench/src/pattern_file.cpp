@@ -302,7 +302,11 @@ class Parser {
   int curve_segments(const Vec2d& a, const std::vector<Vec2d>& c, const Vec2d& b) const {
     double len = (c.front() - a).norm() + (b - c.back()).norm();
     for (std::size_t k = 1; k < c.size(); ++k) len += (c[k] - c[k - 1]).norm();
-    return std::max(2, static_cast<int>(std::ceil(len / curve_step_)));
+    const double segments = std::ceil(len / curve_step_);
+    if (!(segments <= kMaxOutlinePoints))
+      fail("curve of panel '" + current_->panel.name + "' is " + format_number(len) + " cm long: more than " +
+           std::to_string(kMaxOutlinePoints) + " pieces of curve_step " + format_number(curve_step_) + " cm");
+    return std::max(2, static_cast<int>(segments));
   }
 
   void add_edge_name(const std::string& n) {
@@ -329,6 +333,8 @@ class Parser {
       d.closed = true;
       return;
     }
+    if (d.panel.outline.size() >= static_cast<std::size_t>(kMaxOutlinePoints))
+      fail("outline of panel '" + d.panel.name + "' has more than " + std::to_string(kMaxOutlinePoints) + " points");
     d.panel.outline.push_back(p);
   }
 

@@ -8,6 +8,10 @@
 
 namespace clothbench {
 
+/// Most points a panel outline may have once its curves are flattened, in either format: checking
+/// an outline for self-intersection takes time quadratic in its points (found by fuzz/).
+inline constexpr int kMaxOutlinePoints = 2000;
+
 /// Reads a pattern file: `.json` is read as a GarmentCode specification, anything else as
 /// `.pattern` text. Throws InputError "FILE:LINE: what is wrong" on bad input or an unreadable file.
 Pattern load_pattern(const std::string& path);
