@@ -140,21 +140,6 @@ void dressing_t2(ExperimentContext& ctx) {
             "queried and their response is spread to the quad's corners, dressing section 6).\n\n" + t.str());
 }
 
-// least squares y = a + b x and R^2
-void linear_fit(const std::vector<double>& x, const std::vector<double>& y, double& a, double& b, double& r2) {
-  const double n = double(x.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
-  b = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  a = (sy - b * sx) / n;
-  double ss_res = 0, ss_tot = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    ss_res += std::pow(y[i] - (a + b * x[i]), 2);
-    ss_tot += std::pow(y[i] - sy / n, 2);
-  }
-  r2 = ss_tot > 0 ? 1 - ss_res / ss_tot : 1;
-}
-
 void dressing_f8(ExperimentContext& ctx) {
   const std::vector<int> sizes = ctx.quick() ? std::vector<int>{500, 1000, 2000}
                                              : std::vector<int>{500, 1000, 2000, 3500, 5000, 8000, 12000, 20000};

@@ -23,6 +23,9 @@ class MarkdownTable {
   std::vector<std::vector<std::string>> rows_;
 };
 
+/// Least squares y = a + b x over the points, and its R^2.
+void linear_fit(const std::vector<double>& x, const std::vector<double>& y, double& a, double& b, double& r2);
+
 /// What an experiment may use: cached scene runs, output writers, the options of the command.
 class ExperimentContext {
  public:

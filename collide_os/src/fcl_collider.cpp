@@ -81,11 +81,7 @@ void FclCollider::set_body(const BodyFrame& body) {
 void FclCollider::update_body(const BodyFrame& body) {
   Stopwatch sw;
   detail::check_update(impl_->body, impl_->has_body, body, "fcl collider");
-  impl_->body.positions = body.positions;
-  impl_->body.normals = body.normals;
-  impl_->body.velocities = body.velocities;
-  impl_->body.time_s = body.time_s;
-  impl_->body.moving = body.moving;
+  detail::adopt_frame(impl_->body, body);
   impl_->pseudo = PseudoNormals(impl_->body);
   impl_->box = bounding_box(impl_->body.positions);
   // refit every node from its triangles, top-down (no rebuild): FCL's bottom-up refit merges

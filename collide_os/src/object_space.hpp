@@ -41,4 +41,14 @@ inline void check_update(const BodyFrame& current, bool has_body, const BodyFram
                                 std::to_string(current.triangle_count()) + " triangles)");
 }
 
+/// Takes a checked frame's motion (positions, normals, velocities, time) into `current`; the
+/// triangles are the same by check_update.
+inline void adopt_frame(BodyFrame& current, const BodyFrame& body) {
+  current.positions = body.positions;
+  current.normals = body.normals;
+  current.velocities = body.velocities;
+  current.time_s = body.time_s;
+  current.moving = body.moving;
+}
+
 }  // namespace clothbench::detail

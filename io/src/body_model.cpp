@@ -158,28 +158,6 @@ void BodyModelImpl::frame_into(BodyFrame& out, int a, double t, bool in_place) c
   out.moving = true;
 }
 
-void angle_weighted_normals_into(const Points3& positions, const Tris& triangles, Points3& n) {
-  n.setZero();
-  for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
-    const Vec3 p[3] = {positions.col(triangles(0, t)), positions.col(triangles(1, t)), positions.col(triangles(2, t))};
-    const Vec3 fn = (p[1] - p[0]).cross(p[2] - p[0]);
-    const Real len = fn.norm();
-    if (!(len > 0)) continue;
-    const Vec3 unit = fn / len;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
-      const Real denom = e1.norm() * e2.norm();
-      if (!(denom > 0)) continue;
-      const Real c = std::clamp(e1.dot(e2) / denom, Real(-1), Real(1));
-      n.col(triangles(k, t)) += std::acos(c) * unit;
-    }
-  }
-  for (Eigen::Index v = 0; v < n.cols(); ++v) {
-    const Real len = n.col(v).norm();
-    if (len > 0) n.col(v) /= len;
-  }
-}
-
 // ---- BodyModel -------------------------------------------------------------------------------
 
 BodyModel::BodyModel(std::unique_ptr<BodyModelImpl> impl) : impl_(std::move(impl)) {}

@@ -64,7 +64,5 @@ class BodyModelImpl {
   void frame_into(BodyFrame& out, int a, double t, bool in_place) const;
 };
 
-/// Angle-weighted normals written into `normals` (already 3 x nv); no allocation.
-void angle_weighted_normals_into(const Points3& positions, const Tris& triangles, Points3& normals);
 
 }  // namespace clothbench

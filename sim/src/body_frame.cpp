@@ -13,7 +13,13 @@ Box3 bounding_box(const Points3& points) {
 }
 
 Points3 angle_weighted_normals(const Points3& positions, const Tris& triangles) {
-  Points3 n = Points3::Zero(3, positions.cols());
+  Points3 n(3, positions.cols());
+  angle_weighted_normals_into(positions, triangles, n);
+  return n;
+}
+
+void angle_weighted_normals_into(const Points3& positions, const Tris& triangles, Points3& n) {
+  n.setZero(3, positions.cols());
   for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
     // face normal weighted by the interior angle at each corner
     const Vec3 p[3] = {positions.col(triangles(0, t)), positions.col(triangles(1, t)),
@@ -35,7 +41,6 @@ Points3 angle_weighted_normals(const Points3& positions, const Tris& triangles) 
     const Real len = n.col(v).norm();
     if (len > 0) n.col(v) /= len;
   }
-  return n;
 }
 
 EdgeCheck check_edges(const Tris& triangles) {

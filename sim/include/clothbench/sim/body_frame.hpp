@@ -34,6 +34,8 @@ Box3 bounding_box(const Points3& points);
 /// Angle-weighted vertex normals (Thuermer-Wuethrich) of a triangle mesh, unit length (3 x nv).
 /// Vertices touched by no triangle (or only by degenerate ones) get a zero normal.
 Points3 angle_weighted_normals(const Points3& positions, const Tris& triangles);
+/// As angle_weighted_normals, into `normals` (resized to 3 x nv; no allocation when it already is).
+void angle_weighted_normals_into(const Points3& positions, const Tris& triangles, Points3& normals);
 
 /// Number of edges used by exactly one triangle (a closed mesh has 0) and by more than two.
 struct EdgeCheck {
