@@ -1,0 +1,124 @@
+// Super-elasticity limits (dressing section 4, walking section 3): velocity, directional and
+// position (Provot) corrections of over-stretched springs.
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+
+#include "clothbench/sim/simulator.hpp"
+
+namespace clothbench {
+
+const char* to_string(Limit limit) {
+  switch (limit) {
+    case Limit::kNone: return "none";
+    case Limit::kStiff: return "stiff";
+    case Limit::kPosition: return "position";
+    case Limit::kVelocity: return "velocity";
+    case Limit::kVelocityZero: return "velocity-zero";
+    case Limit::kDirectional: return "directional";
+  }
+  return "?";
+}
+
+Limit parse_limit(const std::string& name) {
+  for (Limit l : {Limit::kNone, Limit::kStiff, Limit::kPosition, Limit::kVelocity, Limit::kVelocityZero,
+                  Limit::kDirectional})
+    if (name == to_string(l)) return l;
+  throw std::invalid_argument("limit: unknown method '" + name +
+                              "' (none, stiff, position, velocity, velocity-zero, directional)");
+}
+
+std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa, Real wb) {
+  // walking Eq. 5 averages; with unequal masses the mass-weighted mean keeps momentum and never adds
+  // kinetic energy (the papers' points all have one mass, where both are the same)
+  const Real mean = (wa * va + wb * vb) / (wa + wb);
+  switch (limit) {
+    case Limit::kVelocityZero: return {0, 0};  // dressing 4.3
+    case Limit::kVelocity: return {mean, mean};  // walking Eq. 5
+    case Limit::kDirectional:
+      // walking section 3: perpendicular springs average, others: rear point catches up
+      if (std::abs(cos_alpha) < 0.3f) return {mean, mean};
+      return cos_alpha > 0 ? std::pair<Real, Real>{vb, vb} : std::pair<Real, Real>{va, va};
+    default: return {va, vb};
+  }
+}
+
+void Simulator::limit_velocities() {
+  const Limit l = params_.limit;
+  if (l != Limit::kVelocity && l != Limit::kVelocityZero && l != Limit::kDirectional) return;
+  const Real max_len_factor = 1 + params_.threshold;
+  const Vec3 v_grav = params_.gravity * dt_;  // walking Eq. 6: v_grav = g dt
+  // held points cannot catch up: attached ones and those the body holds (in contact)
+  held_.assign(static_cast<std::size_t>(x_.cols()), 0);
+  for (Eigen::Index i = 0; i < x_.cols(); ++i)
+    held_[i] = inv_m_[i] == 0 || (!contacts_.empty() && contacts_[static_cast<std::size_t>(i)].hit);
+  for (int pass = 0; pass < params_.limit_passes; ++pass)
+    for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) limit_spring(l, max_len_factor, v_grav, s);
+}
+
+void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s) {
+  const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
+  // the length this step would give (Eq. 3 position update): no spring may end it over-elongated
+  const Vec3 d = x_.col(b) - x_.col(a);  // p12 = p2 - p1
+  const Vec3 d_next = d + dt_ * (v_.col(b) - v_.col(a));
+  if (!(d_next.norm() > max_len_factor * mesh_.rest_length[s])) return;
+  const Real len = d.norm();
+  if (!(len > 0)) return;
+  const Vec3 u = d / len;
+  const Real va = v_.col(a).dot(u), vb = v_.col(b).dot(u);
+  if (vb - va <= 0) return;  // only further elongation is forbidden: a spring may shorten
+  if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
+  Real na = va, nb = vb;
+  if (l == Limit::kDirectional) {
+    // walking Eq. 6: v_dir = v_grav + v_object; the rules after it pick averaging or the rear point
+    const Vec3 v_dir = v_grav + spring_object_velocity(a, b);
+    const Real cos_a = v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
+    const int rear = cos_a > 0 ? a : b;
+    if (std::abs(cos_a) >= 0.3f && held_[static_cast<std::size_t>(rear)]) {
+      // a held rear point cannot catch up: the front follows it and is held in turn (our reading)
+      na = nb = rear == a ? va : vb;
+      held_[static_cast<std::size_t>(rear == a ? b : a)] = 1;
+    } else {
+      std::tie(na, nb) = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b]);
+    }
+  } else {
+    std::tie(na, nb) = limit_stretch_velocity(l, va, vb, 0, m_[a], m_[b]);
+  }
+  // an attached end keeps its velocity and the free end follows it
+  if (inv_m_[a] == 0) na = nb = va;
+  if (inv_m_[b] == 0) na = nb = vb;
+  v_.col(a) += (na - va) * u;
+  v_.col(b) += (nb - vb) * u;
+}
+
+Vec3 Simulator::spring_object_velocity(int a, int b) const {
+  // the velocity of the object the spring's ends collide with (zero when neither does)
+  const Contact& ca = contacts_[static_cast<std::size_t>(a)];
+  const Contact& cb = contacts_[static_cast<std::size_t>(b)];
+  if (ca.hit && cb.hit) return 0.5f * (ca.body_velocity + cb.body_velocity);
+  if (ca.hit) return ca.body_velocity;
+  if (cb.hit) return cb.body_velocity;
+  return Vec3::Zero();
+}
+
+void Simulator::limit_positions() {
+  if (params_.limit != Limit::kPosition) return;
+  // Provot 1995: move the ends of springs stretched past (1 + threshold) l0 back to that length
+  const Real max_len_factor = 1 + params_.threshold;
+  for (int pass = 0; pass < params_.limit_passes; ++pass)
+    for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
+      const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
+      const Vec3 d = x_.col(b) - x_.col(a);
+      const Real len = d.norm(), max_len = max_len_factor * mesh_.rest_length[s];
+      const Real wa = inv_m_[a] > 0 ? Real(1) : Real(0), wb = inv_m_[b] > 0 ? Real(1) : Real(0);
+      if (!(len > max_len) || wa + wb == 0) continue;
+      // the velocities follow the moved positions, so Eq. 3 does not push them out again
+      const Vec3 corr = (len - max_len) / len * d / (wa + wb);
+      x_.col(a) += wa * corr;
+      x_.col(b) -= wb * corr;
+      v_.col(a) += (wa / dt_) * corr;
+      v_.col(b) -= (wb / dt_) * corr;
+    }
+}
+
+}  // namespace clothbench
