@@ -1,5 +1,7 @@
-// The CPU rasteriser of the image-space maps: the same coverage as llvmpipe (vertices snapped to
-// 1/256 pixel, pixel-centre samples, top-left rule) and its depths within a few micrometres.
+// The CPU rasteriser of the image-space maps: llvmpipe's coverage (vertices snapped to 1/256 pixel,
+// pixel-centre samples, top-left rule) and llvmpipe's depth arithmetic, so both renderers give the
+// same z-buffer (Mesa 22.3: draw_llvm viewport, lp_setup_tri vertex order, lp_state_setup planes,
+// lp_bld_interp evaluation).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,22 +17,35 @@ namespace {
 constexpr int kSubpixelBits = 8;
 constexpr float kSubpixel = 1 << kSubpixelBits;
 
-// one projected vertex of one view
+// llvmpipe's JIT fuses its multiply-adds (llvm.fmuladd) where the host has FMA instructions
+bool host_fuses_multiply_add() {
+#if defined(__x86_64__) || defined(__i386__)
+  return __builtin_cpu_supports("fma");
+#else
+  return true;
+#endif
+}
+
+// a * b + c, rounded once when `fused`
+inline float mul_add(bool fused, float a, float b, float c) { return fused ? std::fma(a, b, c) : a * b + c; }
+
+// one projected vertex of one view, in the window of the size x 2 size target (back view above)
 struct WindowVertex {
-  float x, y;           // window coordinates [pixels], origin at the lower-left corner
+  float x, y;           // window coordinates [pixels], origin at the target's lower-left corner
+  float zbuf;           // z-buffer depth of this view: 0 at its near plane, 1 at its far plane
   std::int64_t fx, fy;  // snapped, shifted so pixel centres lie on integers (fixed point)
 };
 
-// attributes interpolated over a triangle: z-buffer depth of the view, normal xyz, velocity xyz
-constexpr int kAttributes = 7;
+// attributes interpolated over a triangle: normal xyz, velocity xyz
+constexpr int kAttributes = 6;
 using Attributes = std::array<float, kAttributes>;
 
-// a triangle's attribute planes in window coordinates: a(x, y) = a0 + dadx (x - x0) + dady (y - y0);
-// depth as llvmpipe evaluates it, from its value at the sample origin: z_origin + dzdx col + dzdy row
+// a triangle's planes in window coordinates. Attributes: a(x, y) = a0 + dadx (x - x0) + dady (y - y0).
+// Depth as llvmpipe: zbuf(col, row) = z_origin + dzdx col + dzdy row, anchored at the origin
 struct Planes {
   float x0, y0;
   Attributes a0, dadx, dady;
-  float z_origin;
+  float z_origin, dzdx, dzdy;
 };
 
 // edge function of the snapped edge a -> b at sample s (> 0 left of the edge)
@@ -50,10 +65,10 @@ class CpuMapRenderer final : public MapRenderer {
   std::string_view name() const override { return "cpu"; }
 
   void render(const BodyFrame& body, MapSet& maps) override {
-    const MapFrame& f = maps.frame;
-    // world -> window per view (dressing Eq. 8): back columns are mirrored
-    project(body, f);
-    const float inv_range = 1.0f / f.depth_range();
+    // window coordinates and z-buffer depth of both views, as GL computes them
+    project(body, maps.frame);
+    // z-buffer cleared to the far plane, turned into geometry space at the end (as GL's read-back)
+    std::fill(maps.z.begin(), maps.z.end(), 1.0f);
     // one pass over the triangles, both views
     for (Eigen::Index t = 0; t < body.triangles.cols(); ++t) {
       const int i0 = body.triangles(0, t), i1 = body.triangles(1, t), i2 = body.triangles(2, t);
@@ -62,45 +77,64 @@ class CpuMapRenderer final : public MapRenderer {
       attributes(body, maps.has_velocity, i2, a_[2]);
       for (int view = 0; view < 2; ++view) {
         const auto& w = window_[view];
-        // z-buffer depth of this view: 0 at its near plane, 1 at its far plane
-        std::array<Attributes, 3> a = a_;
-        for (auto& v : a) v[0] = view == MapSet::kFront ? (f.z_max - v[0]) * inv_range : (v[0] - f.z_min) * inv_range;
-        draw(maps, view, {w[i0], w[i1], w[i2]}, a);
+        draw(maps, view, {w[i0], w[i1], w[i2]}, a_);
+      }
+    }
+    depth_from_zbuffer(maps);
+  }
+
+ private:
+  // clip coordinates as the vertex shader computes them (w = 1), then llvmpipe's viewport
+  // transform (draw_llvm) into the size x 2 size target, the back view above the front
+  void project(const BodyFrame& body, const MapFrame& f) {
+    const int nv = body.vertex_count();
+    const float half = 0.5f * static_cast<float>(f.size);
+    for (int view = 0; view < 2; ++view) {
+      const std::array<float, 16> m = clip_from_world(f, view);
+      const float y_translate = half + static_cast<float>(view * f.size);
+      auto& w = window_[view];
+      w.resize(nv);
+      for (int v = 0; v < nv; ++v) {
+        const float xc = m[0] * body.positions(0, v) + m[12];
+        const float yc = m[5] * body.positions(1, v) + m[13];
+        const float zc = m[10] * body.positions(2, v) + m[14];
+        w[v].x = mul_add(fused_, xc, half, half);
+        w[v].y = mul_add(fused_, yc, half, y_translate);
+        w[v].zbuf = mul_add(fused_, zc, 0.5f, 0.5f);
+        // pixel centres at +0.5 become integer sample positions (llvmpipe's pixel offset)
+        w[v].fx = std::llrint((w[v].x - 0.5f) * kSubpixel);
+        w[v].fy = std::llrint((w[v].y - 0.5f) * kSubpixel);
       }
     }
   }
 
- private:
-  // window coordinates of every vertex in both views
-  void project(const BodyFrame& body, const MapFrame& f) {
-    const int nv = body.vertex_count();
-    for (auto& w : window_) w.resize(nv);
-    const float inv = 1.0f / f.pixel;
-    for (int v = 0; v < nv; ++v) {
-      const float u = (body.positions(0, v) - f.x0) * inv;
-      const float y = (body.positions(1, v) - f.y0) * inv;
-      window_[MapSet::kFront][v] = snap(u, y);
-      window_[MapSet::kBack][v] = snap(static_cast<float>(f.size) - u, y);
-    }
-  }
-
-  static WindowVertex snap(float x, float y) {
-    // pixel centres at +0.5 become integer sample positions (llvmpipe's pixel offset)
-    return {x, y, std::llrint((x - 0.5f) * kSubpixel), std::llrint((y - 0.5f) * kSubpixel)};
-  }
-
   static void attributes(const BodyFrame& body, bool velocity, int v, Attributes& a) {
-    a[0] = body.positions(2, v);
-    a[1] = body.normals(0, v);
-    a[2] = body.normals(1, v);
-    a[3] = body.normals(2, v);
-    a[4] = velocity ? body.velocities(0, v) : 0.0f;
-    a[5] = velocity ? body.velocities(1, v) : 0.0f;
-    a[6] = velocity ? body.velocities(2, v) : 0.0f;
+    a[0] = body.normals(0, v);
+    a[1] = body.normals(1, v);
+    a[2] = body.normals(2, v);
+    a[3] = velocity ? body.velocities(0, v) : 0.0f;
+    a[4] = velocity ? body.velocities(1, v) : 0.0f;
+    a[5] = velocity ? body.velocities(2, v) : 0.0f;
   }
 
-  // attribute planes from the unsnapped window positions (as llvmpipe's set-up does)
-  static bool planes(const std::array<WindowVertex, 3>& w, const std::array<Attributes, 3>& a, Planes& p) {
+  // llvmpipe's depth plane (lp_state_setup: init_args, calc_coef4): float set-up from the
+  // unsnapped vertices, 1 / area folded into the edge deltas, value anchored at the origin
+  static bool depth_plane(const std::array<WindowVertex, 3>& w, Planes& p) {
+    float dx01 = w[0].x - w[1].x, dy01 = w[0].y - w[1].y;
+    float dx20 = w[2].x - w[0].x, dy20 = w[2].y - w[0].y;
+    const float area = dx01 * dy20 - dy01 * dx20;
+    if (area == 0.0f) return false;
+    const float ooa = 1.0f / area;
+    dx01 *= ooa, dy01 *= ooa, dx20 *= ooa, dy20 *= ooa;
+    const float dz01 = w[0].zbuf - w[1].zbuf, dz20 = w[2].zbuf - w[0].zbuf;
+    p.dzdx = dz01 * dy20 - dz20 * dy01;
+    p.dzdy = dz20 * dx01 - dz01 * dx20;
+    p.z_origin = w[0].zbuf - (p.dzdx * (w[0].x - 0.5f) + p.dzdy * (w[0].y - 0.5f));
+    return true;
+  }
+
+  // attribute planes from the unsnapped window positions, anchored at the first vertex
+  static bool attribute_planes(const std::array<WindowVertex, 3>& w, const std::array<Attributes, 3>& a, Planes& p) {
     const float dx1 = w[1].x - w[0].x, dy1 = w[1].y - w[0].y;
     const float dx2 = w[2].x - w[0].x, dy2 = w[2].y - w[0].y;
     const float area = dx1 * dy2 - dx2 * dy1;
@@ -114,29 +148,32 @@ class CpuMapRenderer final : public MapRenderer {
       p.dadx[k] = (da1 * dy2 - da2 * dy1) * inv;
       p.dady[k] = (da2 * dx1 - da1 * dx2) * inv;
     }
-    p.z_origin = p.a0[0] - p.dadx[0] * (w[0].x - 0.5f) - p.dady[0] * (w[0].y - 0.5f);
     return true;
   }
 
   // rasterises one triangle into one view: coverage, depth test, attributes
-  static void draw(MapSet& maps, int view, std::array<WindowVertex, 3> w, std::array<Attributes, 3> a) {
-    // counter-clockwise in y-up window coordinates; zero snapped area draws nothing
+  void draw(MapSet& maps, int view, std::array<WindowVertex, 3> w, std::array<Attributes, 3> a) const {
+    // zero snapped area draws nothing
     const std::int64_t area = edge(w[0], w[1], w[2].fx, w[2].fy);
     if (area == 0) return;
+    // depth in llvmpipe's vertex order: a counter-clockwise triangle (y up) has its first two
+    // vertices swapped (lp_setup_tri, provoking vertex last)
+    Planes p;
+    if (!depth_plane(area > 0 ? std::array<WindowVertex, 3>{w[1], w[0], w[2]} : w, p)) return;
+    // coverage and attributes counter-clockwise
     if (area < 0) {
       std::swap(w[1], w[2]);
       std::swap(a[1], a[2]);
     }
-    Planes p;
-    if (!planes(w, a, p)) return;
-    // integer sample range of the snapped bounding box, clipped to the map
-    const int n = maps.frame.size;
+    if (!attribute_planes(w, a, p)) return;
+    // integer sample range of the snapped bounding box, clipped to this view's rows of the target
+    const int n = maps.frame.size, row_offset = view * n;
     const auto lo = [](std::int64_t v) { return static_cast<int>(-((-v) >> kSubpixelBits)); };
     const auto hi = [](std::int64_t v) { return static_cast<int>(v >> kSubpixelBits); };
     const int c0 = std::max(0, lo(std::min({w[0].fx, w[1].fx, w[2].fx})));
     const int c1 = std::min(n - 1, hi(std::max({w[0].fx, w[1].fx, w[2].fx})));
-    const int r0 = std::max(0, lo(std::min({w[0].fy, w[1].fy, w[2].fy})));
-    const int r1 = std::min(n - 1, hi(std::max({w[0].fy, w[1].fy, w[2].fy})));
+    const int r0 = std::max(row_offset, lo(std::min({w[0].fy, w[1].fy, w[2].fy})));
+    const int r1 = std::min(row_offset + n - 1, hi(std::max({w[0].fy, w[1].fy, w[2].fy})));
     const bool tie0 = owns_ties(w[1], w[2]), tie1 = owns_ties(w[2], w[0]), tie2 = owns_ties(w[0], w[1]);
     for (int row = r0; row <= r1; ++row) {
       const std::int64_t sy = static_cast<std::int64_t>(row) << kSubpixelBits;
@@ -146,25 +183,21 @@ class CpuMapRenderer final : public MapRenderer {
         const std::int64_t e0 = edge(w[1], w[2], sx, sy), e1 = edge(w[2], w[0], sx, sy), e2 = edge(w[0], w[1], sx, sy);
         if (e0 < 0 || e1 < 0 || e2 < 0) continue;
         if ((e0 == 0 && !tie0) || (e1 == 0 && !tie1) || (e2 == 0 && !tie2)) continue;
-        shade(maps, view, col, row, p);
+        shade(maps, maps.index(view, col, row - row_offset), col, row, p);
       }
     }
   }
 
-  // depth test (nearer to this view's camera wins) and attribute write at one pixel centre
-  static void shade(MapSet& maps, int view, int col, int row, const Planes& p) {
-    const float dx = static_cast<float>(col) + 0.5f - p.x0, dy = static_cast<float>(row) + 0.5f - p.y0;
-    const float dorg = p.z_origin + p.dadx[0] * static_cast<float>(col) + p.dady[0] * static_cast<float>(row);
-    // z-buffer value to geometry space (dressing Eq. 5, tol applied at the query)
-    const MapFrame& f = maps.frame;
-    const float z = view == MapSet::kFront ? f.z_max - dorg * f.depth_range() : f.z_min + dorg * f.depth_range();
-    const std::size_t i = maps.index(view, col, row);
-    const bool nearer = view == MapSet::kFront ? z > maps.z[i] : z < maps.z[i];
-    if (!nearer) return;
-    maps.z[i] = z;
-    maps.mask[i] = MapSet::kBody;
-    std::array<float, 6> nv;
-    for (int k = 0; k < 6; ++k) nv[k] = p.a0[k + 1] + p.dadx[k + 1] * dx + p.dady[k + 1] * dy;
+  // depth test (GL_LESS on the z-buffer) and attribute write at the target's pixel (col, row)
+  void shade(MapSet& maps, std::size_t i, int col, int row, const Planes& p) const {
+    // llvmpipe's interpolation (lp_bld_interp): z_origin + dzdx col, then + dzdy row, clamped to [0, 1]
+    const float x = static_cast<float>(col), y = static_cast<float>(row);
+    const float zbuf = std::clamp(mul_add(fused_, p.dzdy, y, mul_add(fused_, p.dzdx, x, p.z_origin)), 0.0f, 1.0f);
+    if (!(zbuf < maps.z[i])) return;
+    maps.z[i] = zbuf;
+    const float dx = x + 0.5f - p.x0, dy = y + 0.5f - p.y0;
+    Attributes nv;
+    for (int k = 0; k < kAttributes; ++k) nv[k] = p.a0[k] + p.dadx[k] * dx + p.dady[k] * dy;
     if (maps.float_maps) {
       float* n = &maps.normal[4 * i];
       n[0] = nv[0], n[1] = nv[1], n[2] = nv[2], n[3] = 1.0f;
@@ -188,6 +221,7 @@ class CpuMapRenderer final : public MapRenderer {
     }
   }
 
+  bool fused_ = host_fuses_multiply_add();           // fuse multiply-adds as llvmpipe does on this host
   std::array<std::vector<WindowVertex>, 2> window_;  // per view, one per body vertex
   std::array<Attributes, 3> a_;                      // the current triangle's vertex attributes
 };

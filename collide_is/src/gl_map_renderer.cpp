@@ -5,7 +5,6 @@
 #include <GL/osmesa.h>
 
 #include <array>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -64,25 +63,6 @@ GLuint compile(GLenum type, const char* source) {
     throw std::runtime_error(std::string("is-gl: shader does not compile: ") + log.data());
   }
   return s;
-}
-
-// column-major clip-from-world matrix of one view (walking section 4 cameras)
-std::array<float, 16> clip_from_world(const MapFrame& f, int view) {
-  const float side = f.size * f.pixel;
-  const float sx = 2.0f / side, sz = 2.0f / f.depth_range();
-  std::array<float, 16> m{};
-  if (view == MapSet::kFront) {
-    // x -> [-1, 1] left to right; near (ndc -1) at z_max
-    m[0] = sx, m[12] = -1.0f - sx * f.x0;
-    m[10] = -sz, m[14] = sz * f.z_max - 1.0f;
-  } else {
-    // mirrored x (dressing Eq. 8, X_back); near at z_min
-    m[0] = -sx, m[12] = 1.0f + sx * f.x0;
-    m[10] = sz, m[14] = -sz * f.z_min - 1.0f;
-  }
-  m[5] = sx, m[13] = -1.0f - sx * f.y0;
-  m[15] = 1.0f;
-  return m;
 }
 
 class GlMapRenderer final : public MapRenderer {
@@ -241,20 +221,7 @@ class GlMapRenderer final : public MapRenderer {
       glReadPixels(0, 0, size_, 2 * size_, GL_RGBA, type,
                    maps.float_maps ? static_cast<void*>(maps.velocity.data()) : maps.velocity8.data());
     }
-    const MapFrame& f = maps.frame;
-    const std::size_t n = maps.view_pixels();
-    const float inf = std::numeric_limits<float>::infinity();
-    for (std::size_t i = 0; i < 2 * n; ++i) {
-      const float zbuf = maps.z[i];
-      const bool front = i < n;
-      if (zbuf >= 1.0f) {
-        maps.z[i] = front ? -inf : inf;
-        maps.mask[i] = MapSet::kEmpty;
-        continue;
-      }
-      maps.z[i] = front ? f.z_max - zbuf * f.depth_range() : f.z_min + zbuf * f.depth_range();
-      maps.mask[i] = MapSet::kBody;
-    }
+    depth_from_zbuffer(maps);
   }
 
   OSMesaContext ctx_ = nullptr;

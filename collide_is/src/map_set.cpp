@@ -34,6 +34,24 @@ MapFrame make_map_frame(const Box3& box, const ColliderOptions& options) {
   return f;
 }
 
+std::array<float, 16> clip_from_world(const MapFrame& f, int view) {
+  const float side = f.size * f.pixel;
+  const float sx = 2.0f / side, sz = 2.0f / f.depth_range();
+  std::array<float, 16> m{};
+  if (view == MapSet::kFront) {
+    // x -> [-1, 1] left to right; near (ndc -1) at z_max
+    m[0] = sx, m[12] = -1.0f - sx * f.x0;
+    m[10] = -sz, m[14] = sz * f.z_max - 1.0f;
+  } else {
+    // mirrored x (dressing Eq. 8, X_back); near at z_min
+    m[0] = -sx, m[12] = 1.0f + sx * f.x0;
+    m[10] = sz, m[14] = -sz * f.z_min - 1.0f;
+  }
+  m[5] = sx, m[13] = -1.0f - sx * f.y0;
+  m[15] = 1.0f;
+  return m;
+}
+
 void MapSet::reset(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv) {
   frame = new_frame;
   float_maps = floats;
@@ -114,6 +132,25 @@ void add_side_layer(MapSet& maps) {
         }
       }
     }
+  }
+}
+
+void depth_from_zbuffer(MapSet& maps) {
+  const MapFrame& f = maps.frame;
+  const std::size_t n = maps.view_pixels();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < 2 * n; ++i) {
+    const float zbuf = maps.z[i];
+    const bool front = i < n;
+    // nothing drawn: the comparison of Eq. 9 must fail there
+    if (zbuf >= 1.0f) {
+      maps.z[i] = front ? -inf : inf;
+      maps.mask[i] = MapSet::kEmpty;
+      continue;
+    }
+    // dressing Eq. 5: z-buffer to geometry space
+    maps.z[i] = front ? f.z_max - zbuf * f.depth_range() : f.z_min + zbuf * f.depth_range();
+    maps.mask[i] = MapSet::kBody;
   }
 }
 

@@ -17,9 +17,9 @@ namespace {
 struct MapDiff {
   long coverage_mismatch = 0;
   long covered = 0;
-  double depth_max = 0;         // [m]
-  double depth_p999 = 0;        // [m]
-  double depth_max_facing = 0;  // [m], where the surface faces the camera within 60 degrees
+  long identical = 0;     // covered pixels with bit-identical depth
+  double depth_max = 0;   // [m]
+  double depth_p999 = 0;  // [m]
 };
 
 MapDiff compare(const MapSet& a, const MapSet& b) {
@@ -30,8 +30,8 @@ MapDiff compare(const MapSet& a, const MapSet& b) {
     if (ca != cb) ++d.coverage_mismatch;
     if (!ca || !cb) continue;
     ++d.covered;
+    d.identical += a.z[i] == b.z[i];
     diffs.push_back(std::abs(static_cast<double>(a.z[i]) - b.z[i]));
-    if (std::abs(b.normal_at(i).z()) >= 0.5) d.depth_max_facing = std::max(d.depth_max_facing, diffs.back());
   }
   if (diffs.empty()) return d;
   std::sort(diffs.begin(), diffs.end());
@@ -148,21 +148,24 @@ TEST(Maps, UnknownRendererIsRejected) {
   EXPECT_THROW(render_maps(make_sphere_body(Vec3::Zero(), 1), "vulkan", ColliderOptions{}), std::invalid_argument);
 }
 
-// GL and CPU must agree: coverage identical, depth within 10 µm
+// GL and CPU must agree: coverage identical, depth within 10 µm on every pixel. The CPU
+// rasteriser repeats llvmpipe's depth arithmetic, so a float depth target (float maps) holds the
+// same bits on all but the odd pixel; a 24-bit one (8-bit maps) differs by its quantisation.
 void expect_same_maps(const BodyFrame& body, const ColliderOptions& options, const char* what) {
   const MapSet gl = render_maps(body, "gl", options);
   const MapSet cpu = render_maps(body, "cpu", options);
   const MapDiff d = compare(gl, cpu);
+  const double identical = d.covered ? static_cast<double>(d.identical) / d.covered : 0.0;
   std::cout << "[ maps ] " << what << " " << options.map_size << "^2 " << (options.float_maps ? "float" : "8-bit")
-            << ": covered " << d.covered << ", coverage mismatches " << d.coverage_mismatch << ", depth |gl-cpu| max "
-            << d.depth_max * 1e6 << " um, 99.9% " << d.depth_p999 * 1e6 << " um, facing the camera "
-            << d.depth_max_facing * 1e6 << " um\n";
+            << ": covered " << d.covered << ", coverage mismatches " << d.coverage_mismatch << ", depth bit-identical on "
+            << 100 * identical << " %, |gl-cpu| 99.9% " << d.depth_p999 * 1e6 << " um, max " << d.depth_max * 1e6
+            << " um\n";
   EXPECT_GT(d.covered, 1000);
   EXPECT_EQ(d.coverage_mismatch, 0);
-  // grazing triangles amplify float rounding of the interpolation (DEPENDENCIES.md: 15-45 um worst)
-  EXPECT_LT(d.depth_p999, 10e-6);
-  EXPECT_LT(d.depth_max_facing, 10e-6);
-  EXPECT_LT(d.depth_max, 50e-6);
+  EXPECT_LT(d.depth_max, 10e-6);
+  if (options.float_maps) {
+    EXPECT_GE(identical, 0.999);
+  }
 }
 
 TEST(GlMaps, SameAsCpuOnASphere) {

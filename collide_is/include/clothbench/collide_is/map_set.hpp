@@ -2,6 +2,7 @@
 /// Front and back depth, normal and velocity maps of a body (dressing paper section 5, walking
 /// paper section 4), the cameras that produce them, and the two renderers that draw them:
 /// OpenGL through OSMesa ("gl") and our CPU rasteriser ("cpu"), which give the same coverage.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -37,6 +38,12 @@ struct MapFrame {
   /// Distance between the near and far planes [m] (bboxdepth of dressing Eq. 5).
   Real depth_range() const { return z_max - z_min; }
 };
+
+/// Column-major clip-from-world matrix of one view (0 front, 1 back) for a viewport of
+/// frame.size^2 pixels: x, y to [-1, 1] over the map's square (back view mirrored in x, dressing
+/// Eq. 8), z to -1 at the view's near plane and +1 at its far plane. Both renderers use it, so
+/// both start from the same float window coordinates.
+std::array<float, 16> clip_from_world(const MapFrame& frame, int view);
 
 /// Cameras for a body's bounding box. The square is the papers' (side = box height, bottom on
 /// the box's floor, centred on the box in x; dressing Eq. 8) or, with options.fit_extent, the
@@ -88,6 +95,11 @@ struct MapSet {
 /// becomes kSide. Applied to both views.
 void add_side_layer(MapSet& maps);
 
+/// Turns maps.z from z-buffer values (0 at the view's near plane, 1 at its far plane; 1 where
+/// nothing was drawn) into body surface z [m] (dressing Eq. 5, tol applied at the query) and sets
+/// the mask to kBody where something was drawn, kEmpty (z = -inf front, +inf back) elsewhere.
+void depth_from_zbuffer(MapSet& maps);
+
 /// Draws both views of a body into a MapSet whose frame and encoding are already set (reset()).
 class MapRenderer {
  public:
@@ -108,8 +120,13 @@ class MapRenderer {
 /// shader does not compile.
 std::unique_ptr<MapRenderer> make_gl_map_renderer();
 
-/// The CPU rasteriser: both views in one pass over the triangles, vertices snapped to 1/256
-/// pixel, pixel centres sampled with the top-left fill rule as llvmpipe does, float attributes.
+/// The CPU rasteriser: both views in one pass over the triangles, reproducing llvmpipe (Mesa 22.3):
+/// window coordinates through clip_from_world and the viewport of one size x 2 size target (back
+/// view above the front), vertices snapped to 1/256 pixel, pixel centres sampled with the
+/// top-left fill rule, and the z-buffer value from llvmpipe's depth plane: set up in float from
+/// the unsnapped vertices in its vertex order, anchored at the window origin, evaluated with fused
+/// multiply-adds where the host has them (as llvmpipe's JIT does). Float attributes, anchored at
+/// the triangle's first vertex.
 std::unique_ptr<MapRenderer> make_cpu_map_renderer();
 
 /// One-shot maps of a body: frame from its bounding box and `options` (map_size, fit_extent,
