@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "clothbench/config.h"
 #include "clothbench/sim/mesh_query.hpp"
+#include "clothbench/sim/timer.hpp"
 
 #ifdef CLOTHBENCH_WITH_EMBREE
 #include "clothbench/collide_os/embree_collider.hpp"
@@ -23,6 +25,9 @@ struct Oracle::Impl {
   explicit Impl(const BodyFrame& body) { distance.set_body(body); }
   void update(const BodyFrame& body) { distance.update_body(body); }
   void signed_distance(PointsView points, Real* out) const { distance.signed_distance(points, out); }
+  void segment_crossings(PointsView vertices, const Pairs& segments, std::uint8_t* out) const {
+    distance.segment_crossings(vertices, segments, out);
+  }
 };
 
 bool Oracle::uses_embree() { return true; }
@@ -58,11 +63,48 @@ struct Oracle::Impl {
       out[i] = (p - cp.point).dot(pseudo.at(cp)) < 0 ? -dist : dist;
     }
   }
+  void segment_crossings(PointsView vertices, const Pairs& segments, std::uint8_t* out) const {
+    for (Eigen::Index k = 0; k < segments.cols(); ++k) {
+      const Vec3 a = vertices[std::size_t(segments(0, k))], b = vertices[std::size_t(segments(1, k))];
+      // every triangle until one is met
+      bool hit = false;
+      for (int t = 0; t < body.triangle_count() && !hit && a.allFinite() && b.allFinite(); ++t)
+        hit = segment_crosses_triangle(a, b, body.positions.col(body.triangles(0, t)),
+                                       body.positions.col(body.triangles(1, t)), body.positions.col(body.triangles(2, t)));
+      out[k] = hit ? 1 : 0;
+    }
+  }
 };
 
 bool Oracle::uses_embree() { return false; }
 
 #endif
+
+Pairs structural_springs(const ClothMesh& mesh) {
+  Pairs out(2, mesh.count(SpringKind::kStructural));
+  Eigen::Index n = 0;
+  for (int s = 0; s < mesh.spring_count(); ++s)
+    if (mesh.kind[std::size_t(s)] == SpringKind::kStructural) out.col(n++) = mesh.springs.col(s);
+  return out;
+}
+
+bool segment_crosses_triangle(const Vec3& a, const Vec3& b, const Vec3& t0, const Vec3& t1, const Vec3& t2) {
+  // Moller-Trumbore in double: the line a + t (b - a) meets the plane inside the closed triangle
+  const Eigen::Vector3d o = a.cast<double>(), d = b.cast<double>() - o, v0 = t0.cast<double>();
+  const Eigen::Vector3d e1 = t1.cast<double>() - v0, e2 = t2.cast<double>() - v0;
+  const Eigen::Vector3d p = d.cross(e2);
+  const double det = e1.dot(p);
+  if (det == 0) return false;  // parallel, zero-length segment or degenerate triangle
+  const Eigen::Vector3d s = o - v0;
+  const double u = s.dot(p) / det;
+  if (u < 0 || u > 1) return false;
+  const Eigen::Vector3d q = s.cross(e1);
+  const double v = d.dot(q) / det;
+  if (v < 0 || u + v > 1) return false;
+  // and within the segment, ends included
+  const double t = e2.dot(q) / det;
+  return t >= 0 && t <= 1;
+}
 
 Oracle::Oracle(const BodyFrame& body) : impl_(std::make_unique<Impl>(body)) {}
 Oracle::~Oracle() = default;
@@ -76,11 +118,39 @@ void Oracle::signed_distance(PointsView points, std::vector<Real>& out) const {
   impl_->signed_distance(points, out.data());
 }
 
+void Oracle::segment_crossings(PointsView vertices, const Pairs& segments, std::vector<std::uint8_t>& out) const {
+  // indices checked here, so the query loops need not
+  if (segments.cols() > 0 && (segments.minCoeff() < 0 || std::size_t(segments.maxCoeff()) >= vertices.count))
+    throw std::invalid_argument("oracle: a segment index lies outside the " + std::to_string(vertices.count) +
+                                " cloth vertices");
+  out.resize(std::size_t(segments.cols()));
+  impl_->segment_crossings(vertices, segments, out.data());
+}
+
+void Oracle::measure_crossings(PointsView vertices, const Pairs& segments, Accuracy& a) const {
+  const Stopwatch clock;
+  std::vector<std::uint8_t> crosses;
+  segment_crossings(vertices, segments, crosses);
+  // segments with a non-finite end are not tested
+  a.segments = 0;
+  a.crossings = 0;
+  for (Eigen::Index k = 0; k < segments.cols(); ++k) {
+    if (!vertices[std::size_t(segments(0, k))].allFinite() || !vertices[std::size_t(segments(1, k))].allFinite()) continue;
+    ++a.segments;
+    a.crossings += crosses[std::size_t(k)];
+  }
+  a.crossings_pct = a.segments > 0 ? 100.0 * double(a.crossings) / double(a.segments) : 0.0;
+  a.crossings_ms = clock.ms();
+}
+
 Accuracy Oracle::measure(PointsView points) const {
+  const Stopwatch clock;
   std::vector<Real> depth;
   signed_distance(points, depth);
+  const double depth_ms = clock.ms();
   // penetration [mm] of every finite point; 0 outside
   Accuracy a;
+  a.depth_ms = depth_ms;
   std::vector<double> pen;
   pen.reserve(depth.size());
   double sum = 0;

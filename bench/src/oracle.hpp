@@ -4,11 +4,16 @@
 /// pseudo-normal sign; the bodies are closed meshes). Uses Embree's point query when the build
 /// has CLOTHBENCH_WITH_EMBREE; otherwise (documented fallback) every triangle per point
 /// (closest_point_brute), exact but O(points x triangles).
+/// Crossings: cloth segments (structural springs) that pass through a body triangle, the "holes"
+/// of dressing section 7 that vertex and midpoint queries cannot see; one Embree occlusion ray per
+/// segment, or every triangle per segment without Embree.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 #include "clothbench/sim/body_frame.hpp"
+#include "clothbench/sim/cloth.hpp"
 #include "clothbench/sim/collider.hpp"
 
 namespace clothbench {
@@ -21,7 +26,20 @@ struct Accuracy {
   double depth_p95_mm = 0;   ///< 95th percentile of penetration over all points [mm]; 0 when < 5 % inside
   std::size_t points = 0;    ///< finite points measured (non-finite points are skipped)
   std::size_t inside = 0;    ///< points inside (signed distance < 0)
+  std::size_t segments = 0;  ///< finite segments tested for crossings (structural springs)
+  std::size_t crossings = 0; ///< segments that meet a body triangle; a segment wholly inside meets none
+  double crossings_pct = 0;  ///< crossings / segments [%]; 0 when none were tested
+  double depth_ms = 0;       ///< cost of the signed-distance query of measure() [ms]
+  double crossings_ms = 0;   ///< cost of the segment query of measure_crossings() [ms]
 };
+
+/// The structural springs of a cloth (2 x ns_structural vertex indices): the segments whose
+/// crossings the oracle counts (shear and flexion springs span more than one grid cell).
+Pairs structural_springs(const ClothMesh& mesh);
+
+/// Exact test of the closed segment a -> b against triangle (t0, t1, t2), either face, in double
+/// precision (Moller-Trumbore); false for a zero-length segment or a degenerate triangle.
+bool segment_crosses_triangle(const Vec3& a, const Vec3& b, const Vec3& t0, const Vec3& t1, const Vec3& t2);
 
 /// Exact signed distance to one body frame. Movable, not copyable.
 class Oracle {
@@ -41,6 +59,13 @@ class Oracle {
   /// out[i] = signed distance of points[i] [m], < 0 inside; NaN for a non-finite point.
   /// `out` is resized to points.count.
   void signed_distance(PointsView points, std::vector<Real>& out) const;
+  /// out[k] = 1 when segment k, from vertices[segments(0, k)] to vertices[segments(1, k)] [m],
+  /// meets a body triangle, else 0 (also for a non-finite or zero-length segment); `out` is
+  /// resized to segments.cols(). Throws std::invalid_argument for an index outside the vertices.
+  void segment_crossings(PointsView vertices, const Pairs& segments, std::vector<std::uint8_t>& out) const;
+  /// Fills a.segments, a.crossings, a.crossings_pct and a.crossings_ms for the segments (see
+  /// segment_crossings; non-finite segments are not counted as tested). Throws as segment_crossings.
+  void measure_crossings(PointsView vertices, const Pairs& segments, Accuracy& a) const;
   /// True when the Embree point query answers; false for the brute-force fallback.
   static bool uses_embree();
 

@@ -1,3 +1,4 @@
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -47,6 +48,17 @@ void EmbreeDistance::signed_distance(PointsView points, Real* depth_out) const {
     const ClosestPoint cp = impl_->scene.closest(p, unbounded);
     const Real dist = std::sqrt(cp.dist2);
     depth_out[i] = (p - cp.point).dot(impl_->pseudo.at(cp)) < 0 ? -dist : dist;
+  }
+}
+
+void EmbreeDistance::segment_crossings(PointsView vertices, const Pairs& segments, std::uint8_t* crosses_out) const {
+  for (Eigen::Index k = 0; k < segments.cols(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(segments(0, k)), j = static_cast<std::size_t>(segments(1, k));
+    assert(i < vertices.count && j < vertices.count);
+    const Vec3 a = vertices[i], b = vertices[j];
+    // one ray per segment; nothing crosses before set_body or from a non-finite end
+    const bool valid = impl_ && impl_->has_body && a.allFinite() && b.allFinite();
+    crosses_out[k] = valid && impl_->scene.segment_hits(a, b) ? 1 : 0;
   }
 }
 

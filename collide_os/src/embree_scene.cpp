@@ -80,9 +80,9 @@ void EmbreeScene::build(const BodyFrame& body) {
   std::transform(body.triangles.data(), body.triangles.data() + 3 * nt, indices_.begin(),
                  [](std::int32_t i) { return static_cast<std::uint32_t>(i); });
 
-  // dynamic scene, LOW build quality, REFIT geometry: vertex updates refit the BVH
+  // dynamic scene, LOW build quality, REFIT geometry: vertex updates refit the BVH; robust rays
   scene_ = rtcNewScene(device_);
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_DYNAMIC);
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_LOW);
   geometry_ = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetGeometryBuildQuality(geometry_, RTC_BUILD_QUALITY_REFIT);
@@ -119,6 +119,30 @@ ClosestPoint EmbreeScene::closest(const Vec3& p, Real radius) const {
   rtcInitPointQueryContext(&context);
   rtcPointQuery(scene_, &query, &context, closest_callback, &state);
   return state.best;
+}
+
+bool EmbreeScene::segment_hits(const Vec3& a, const Vec3& b) const {
+  const Vec3 d = b - a;
+  if (d.squaredNorm() == 0) return false;
+  // one occlusion ray along the unnormalised direction b - a: t in [0, 1] spans the segment
+  RTCRay ray;
+  ray.org_x = a.x();
+  ray.org_y = a.y();
+  ray.org_z = a.z();
+  ray.dir_x = d.x();
+  ray.dir_y = d.y();
+  ray.dir_z = d.z();
+  ray.tnear = 0.0f;
+  ray.tfar = 1.0f;
+  ray.time = 0.0f;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded1(scene_, &context, &ray);
+  // rtcOccluded1 sets tfar to -infinity on a hit
+  return ray.tfar < 0.0f;
 }
 
 }  // namespace clothbench::detail

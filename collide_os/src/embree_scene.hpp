@@ -12,7 +12,8 @@ namespace clothbench::detail {
 
 /// Owns an Embree device, scene and triangle geometry (non-copyable, not movable: the device
 /// error callback points at it). The scene is flagged dynamic with build quality LOW and the
-/// geometry REFIT, so refit() updates the BVH instead of rebuilding it.
+/// geometry REFIT, so refit() updates the BVH instead of rebuilding it; it is also flagged robust,
+/// so segment queries keep full arithmetic accuracy.
 class EmbreeScene {
  public:
   /// threads: Embree build threads (>= 1). Throws std::runtime_error when no device opens.
@@ -29,6 +30,9 @@ class EmbreeScene {
   /// Exact closest point of the body to p closer than `radius` [m] (infinity: unbounded);
   /// triangle = -1 when none is. Thread-safe; never throws.
   ClosestPoint closest(const Vec3& p, Real radius) const;
+  /// True when the closed segment a -> b [m] meets a body triangle (one occlusion ray, either
+  /// face). False for a zero-length segment. Thread-safe; never throws.
+  bool segment_hits(const Vec3& a, const Vec3& b) const;
 
  private:
   void check(const std::string& what);

@@ -3,6 +3,7 @@
 /// exact signed distance the accuracy oracle uses. Both share one scene wrapper: a dynamic scene
 /// (build quality LOW, geometry REFIT) over a shared float vertex buffer, so moving bodies are
 /// refitted. Answers equal `brute`'s (same closest-point, sign and interpolation code).
+#include <cstdint>
 #include <memory>
 
 #include "clothbench/sim/collider.hpp"
@@ -39,7 +40,8 @@ class EmbreeCollider final : public Collider {
 std::unique_ptr<Collider> make_embree_collider(const ColliderOptions& options);
 
 /// Exact signed distance to a closed body, for the accuracy oracle (DESIGN.md): closest point
-/// over the whole body (unbounded radius), sign from angle-weighted pseudo-normals.
+/// over the whole body (unbounded radius), sign from angle-weighted pseudo-normals; and exact
+/// segment-surface crossings (cloth springs through body triangles).
 /// One thread. Non-copyable, movable.
 class EmbreeDistance {
  public:
@@ -57,6 +59,11 @@ class EmbreeDistance {
   /// depth_out[i] = signed distance of points[i] to the surface [m], < 0 inside; NaN for a
   /// non-finite point or before set_body. depth_out holds points.count values.
   void signed_distance(PointsView points, Real* depth_out) const;
+  /// Segments against the body surface, one Embree occlusion ray each: crosses_out[k] = 1 when
+  /// the closed segment from vertices[segments(0, k)] to vertices[segments(1, k)] [m] meets a
+  /// body triangle, else 0 (also for a zero-length or non-finite segment, or before set_body).
+  /// Indices must lie in [0, vertices.count); crosses_out holds segments.cols() values.
+  void segment_crossings(PointsView vertices, const Pairs& segments, std::uint8_t* crosses_out) const;
 
  private:
   struct Impl;

@@ -1,0 +1,142 @@
+// The oracle's crossings: structural springs through body triangles, counted by hand on a box.
+#include "oracle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace clothbench {
+namespace {
+
+constexpr Real kHalf = 0.15f;  // the box body spans [-kHalf, kHalf] on every axis [m]
+
+// a closed box of 12 triangles, wound outward
+BodyFrame box_body() {
+  BodyFrame b;
+  b.positions.resize(3, 8);
+  for (int i = 0; i < 8; ++i)
+    b.positions.col(i) = Vec3(i & 1 ? kHalf : -kHalf, i & 2 ? kHalf : -kHalf, i & 4 ? kHalf : -kHalf);
+  const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  b.triangles.resize(3, 12);
+  for (int f = 0; f < 6; ++f)
+    for (int h = 0; h < 2; ++h) {
+      int t[3] = {quads[f][0], quads[f][1 + h], quads[f][2 + h]};
+      const Vec3 a = b.positions.col(t[0]), e1 = b.positions.col(t[1]) - a, e2 = b.positions.col(t[2]) - a;
+      if (e1.cross(e2).dot(a + e1 / 3 + e2 / 3) < 0) std::swap(t[1], t[2]);
+      b.triangles.col(2 * f + h) << t[0], t[1], t[2];
+    }
+  finish_static_body(b);
+  return b;
+}
+
+// 7 x 7 vertices 0.1 m apart in the plane y = height, x and z in [-0.3, 0.3]
+ClothMesh grid_at(Real height) {
+  return make_grid_cloth(7, 7, 0.1f, Vec3(-0.3f, height, -0.3f), Vec3::UnitX(), Vec3::UnitZ());
+}
+
+Points3 two_points(const Vec3& a, const Vec3& b) {
+  Points3 p(3, 2);
+  p << a, b;
+  return p;
+}
+
+Pairs one_segment() {
+  Pairs s(2, 1);
+  s << 0, 1;
+  return s;
+}
+
+TEST(Crossings, SegmentTriangleByHand) {
+  const Vec3 t0(0, 0, 0), t1(1, 0, 0), t2(0, 1, 0);
+  EXPECT_TRUE(segment_crosses_triangle(Vec3(0.2f, 0.2f, -1), Vec3(0.2f, 0.2f, 1), t0, t1, t2));
+  EXPECT_TRUE(segment_crosses_triangle(Vec3(0.2f, 0.2f, 1), Vec3(0.2f, 0.2f, -1), t0, t1, t2));  // either face
+  EXPECT_TRUE(segment_crosses_triangle(Vec3(0.2f, 0.2f, 0), Vec3(0.2f, 0.2f, 1), t0, t1, t2));   // end on it
+  EXPECT_FALSE(segment_crosses_triangle(Vec3(0.2f, 0.2f, 0.1f), Vec3(0.2f, 0.2f, 1), t0, t1, t2));
+  EXPECT_FALSE(segment_crosses_triangle(Vec3(0.8f, 0.8f, -1), Vec3(0.8f, 0.8f, 1), t0, t1, t2));  // beside it
+  EXPECT_FALSE(segment_crosses_triangle(Vec3(-1, 0.2f, 0), Vec3(1, 0.2f, 0), t0, t1, t2));        // in its plane
+  EXPECT_FALSE(segment_crosses_triangle(Vec3(0.2f, 0.2f, 0), Vec3(0.2f, 0.2f, 0), t0, t1, t2));   // zero length
+}
+
+TEST(Crossings, GridThroughABoxCountedByHand) {
+  // inside the box: x, z in {-0.1, 0, 0.1}; each of the 3 inside rows and 3 inside columns has
+  // 2 springs leaving the box (-0.2 <-> -0.1 and 0.1 <-> 0.2) and 2 wholly inside
+  const ClothMesh cloth = grid_at(0);
+  const Pairs springs = structural_springs(cloth);
+  ASSERT_EQ(springs.cols(), 2 * 7 * 6);
+  const Oracle oracle(box_body());
+  Accuracy a = oracle.measure(cloth.positions);
+  oracle.measure_crossings(cloth.positions, springs, a);
+  EXPECT_EQ(a.inside, 9u);
+  EXPECT_EQ(a.segments, 84u);
+  EXPECT_EQ(a.crossings, 12u);
+  EXPECT_NEAR(a.crossings_pct, 100.0 * 12 / 84, 1e-9);
+  EXPECT_GE(a.crossings_ms, 0.0);
+  // shear and flexion springs also cross there: the count is the structural springs' only
+  Accuracy all;
+  oracle.measure_crossings(cloth.positions, cloth.springs, all);
+  EXPECT_GT(all.crossings, a.crossings);
+}
+
+TEST(Crossings, ClothOutsideCrossesNothing) {
+  const ClothMesh cloth = grid_at(kHalf + 0.05f);
+  const Oracle oracle(box_body());
+  Accuracy a = oracle.measure(cloth.positions);
+  oracle.measure_crossings(cloth.positions, structural_springs(cloth), a);
+  EXPECT_EQ(a.inside, 0u);
+  EXPECT_EQ(a.segments, 84u);
+  EXPECT_EQ(a.crossings, 0u);
+  EXPECT_EQ(a.crossings_pct, 0.0);
+}
+
+TEST(Crossings, SpringInsideCrossesNothingButCountsInside) {
+  const Points3 p = two_points(Vec3(-0.05f, 0, 0), Vec3(0.05f, 0.1f, 0));
+  const Oracle oracle(box_body());
+  Accuracy a = oracle.measure(p);
+  oracle.measure_crossings(p, one_segment(), a);
+  EXPECT_EQ(a.inside, 2u);
+  EXPECT_EQ(a.crossings, 0u);
+}
+
+TEST(Crossings, SpringThroughTheBodyWithBothEndsOutside) {
+  // the tunnelling case vertex queries cannot see: no point inside, one crossing
+  const Points3 p = two_points(Vec3(-0.2f, 0.05f, 0), Vec3(0.2f, 0.05f, 0));
+  const Oracle oracle(box_body());
+  Accuracy a = oracle.measure(p);
+  oracle.measure_crossings(p, one_segment(), a);
+  EXPECT_EQ(a.inside, 0u);
+  EXPECT_EQ(a.crossings, 1u);
+  EXPECT_NEAR(a.crossings_pct, 100.0, 1e-9);
+}
+
+TEST(Crossings, NonFiniteSegmentsAreNotTestedAndBadIndicesThrow) {
+  Points3 p(3, 3);
+  p << Vec3(-0.2f, 0, 0), Vec3(0.2f, 0, 0), Vec3::Constant(std::numeric_limits<Real>::quiet_NaN());
+  Pairs s(2, 2);
+  s << 0, 0, 1, 2;
+  const Oracle oracle(box_body());
+  Accuracy a;
+  oracle.measure_crossings(p, s, a);
+  EXPECT_EQ(a.segments, 1u);
+  EXPECT_EQ(a.crossings, 1u);
+  s(1, 1) = 3;
+  EXPECT_THROW(oracle.measure_crossings(p, s, a), std::invalid_argument);
+  s(1, 1) = -1;
+  EXPECT_THROW(oracle.measure_crossings(p, s, a), std::invalid_argument);
+}
+
+TEST(Crossings, FollowTheBody) {
+  // the box moves 0.5 m up: the grid at y = 0 no longer crosses it
+  const ClothMesh cloth = grid_at(0);
+  Oracle oracle(box_body());
+  BodyFrame moved = box_body();
+  moved.positions.row(1).array() += 0.5f;
+  oracle.update_body(moved);
+  Accuracy a;
+  oracle.measure_crossings(cloth.positions, structural_springs(cloth), a);
+  EXPECT_EQ(a.crossings, 0u);
+}
+
+}  // namespace
+}  // namespace clothbench
