@@ -226,9 +226,12 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     ++r.frames;
     r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
     if (options.measure_frames && alive) {
-      const Accuracy a = Oracle(frame).measure(sim.positions());
+      const Oracle oracle(frame);
+      Accuracy a = oracle.measure(sim.positions());
+      oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
       r.animate_inside_max_pct = std::max(r.animate_inside_max_pct, a.inside_pct);
       r.animate_depth_max_mm = std::max(r.animate_depth_max_mm, a.depth_max_mm);
+      r.animate_crossings_max_pct = std::max(r.animate_crossings_max_pct, a.crossings_pct);
     }
     if (options.on_frame) options.on_frame(f, t, frame, sim);
     progress.report("animate: frame %ld of %ld (t = %.2f s)", f, frames, t);
@@ -238,7 +241,8 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   clock.finish(r.animate);
 }
 
-// accuracy of the end state against the exact body (vertices, and quad midpoints with face queries)
+// accuracy of the end state against the exact body (vertices, and quad midpoints with face queries;
+// crossings of the structural springs)
 void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   Oracle oracle(r.final_body);
   Points3 points = sim.positions();
@@ -248,6 +252,7 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
     points = std::move(all);
   }
   r.accuracy = oracle.measure(points);
+  oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), r.accuracy);
   r.seam_gap_max_mm = 1e3 * double(sim.seam_gap_max());
   const StrainStats strain = sim.strain();
   r.strain_max = strain.max;

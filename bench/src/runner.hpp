@@ -47,6 +47,7 @@ struct RunResult {
   double animate_strain_max = 0;///< largest structural strain seen at any animation frame
   double animate_inside_max_pct = 0;  ///< RunOptions::measure_frames: most cloth inside the body at any frame [%]
   double animate_depth_max_mm = 0;    ///< RunOptions::measure_frames: deepest penetration at any frame [mm]
+  double animate_crossings_max_pct = 0;  ///< RunOptions::measure_frames: most structural springs crossing the body at any frame [%]
   std::vector<float> sew_iteration_ms;  ///< wall time of every sew iteration (RunOptions::trace)
   bool converged = false;       ///< sewn (when sewing) and settled
   std::optional<Divergence> divergence;
