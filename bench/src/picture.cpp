@@ -1,23 +1,45 @@
-// A small z-buffer rasteriser for pictures (not for collision detection: collide_is has its own).
+// Pictures of dressed bodies: one orthographic camera, drawn by OpenGL through OSMesa
+// (clothbench::render) or by a small CPU z-buffer rasteriser (not for collision detection:
+// collide_is has its own); and the glTF export of the same scene.
 #include "picture.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "clothbench/io/gltf_export.hpp"
+#ifdef CLOTHBENCH_PICTURES_GL
+#include "clothbench/render/offscreen_renderer.hpp"
+#endif
 
 namespace clothbench {
 
 namespace {
 
+constexpr Rgb kBodyColour{200, 190, 180};
+// cloth grid lines are drawn when quad edges are at least this long on screen [pixels]
+constexpr Real kMinGridPixels = 5;
+
 struct Camera {
   Vec3 right, up, toward;  // toward the viewer
   Vec3 origin;             // world point at pixel (0, 0) plane
   Real scale;              // pixels per metre
+  int width, height;       // [pixels]
 };
 
+Box3 scene_box(const BodyFrame& body, const ClothMesh& cloth) {
+  Box3 box = bounding_box(body.positions);
+  if (cloth.positions.cols() > 0) {
+    const Box3 c = bounding_box(cloth.positions);
+    box.min = box.min.cwiseMin(c.min);
+    box.max = box.max.cwiseMax(c.max);
+  }
+  return box;
+}
+
+// the box seen from `view`, 5 % margin, `height` pixels tall
 Camera make_camera(const Box3& box, int height, View view) {
   Camera c;
   c.up = Vec3::UnitY();
@@ -28,22 +50,36 @@ Camera make_camera(const Box3& box, int height, View view) {
   const Vec3 centre = box.center();
   const Real half_width = 0.5f * std::max(box.size().x(), box.size().z()) + margin;
   c.origin = centre - c.right * half_width + c.up * (0.5f * box.size().y() + margin);
+  c.height = height;
+  c.width = static_cast<int>(std::ceil(c.scale * 2 * half_width));
   return c;
 }
 
-int image_width(const Box3& box, int height) {
-  const Real margin = 0.05f * box.size().y();
-  return static_cast<int>(std::ceil(Real(height) * (std::max(box.size().x(), box.size().z()) + 2 * margin) /
-                                    (box.size().y() + 2 * margin)));
+// light from the upper right, in front of the viewer
+Vec3 light_direction(const Camera& c) { return (0.3f * c.right + 0.5f * c.up + 1.0f * c.toward).normalized(); }
+
+Rgb panel_colour(int panel) {
+  static const std::array<Rgb, 6> colours{{{200, 60, 60}, {60, 110, 200}, {220, 160, 40}, {70, 160, 90}, {150, 80, 180}, {40, 170, 170}}};
+  return colours[std::size_t(std::max(panel, 0)) % colours.size()];
+}
+
+int vertex_panel(const ClothMesh& cloth, Eigen::Index v) { return cloth.panel.empty() ? 0 : cloth.panel[std::size_t(v)]; }
+
+// the cloth's quads as triangles (0 1 2, 0 2 3)
+Tris quad_triangles(const Quads& quads) {
+  Tris t(3, 2 * quads.cols());
+  for (Eigen::Index q = 0; q < quads.cols(); ++q) {
+    t.col(2 * q) << quads(0, q), quads(1, q), quads(2, q);
+    t.col(2 * q + 1) << quads(0, q), quads(2, q), quads(3, q);
+  }
+  return t;
 }
 
 class Raster {
  public:
   Raster(Image& image, const Camera& cam)
-      : img_(image), cam_(cam), z_(size_t(image.width()) * image.height(), -std::numeric_limits<Real>::infinity()) {
-    // light from the upper right, in front of the viewer
-    light_ = (0.3f * cam.right + 0.5f * cam.up + 1.0f * cam.toward).normalized();
-  }
+      : img_(image), cam_(cam), z_(size_t(image.width()) * image.height(), -std::numeric_limits<Real>::infinity()),
+        light_(light_direction(cam)) {}
 
   // one flat-shaded triangle (both sides lit)
   void triangle(const Vec3& a, const Vec3& b, const Vec3& c, Rgb colour) {
@@ -87,54 +123,143 @@ class Raster {
   Vec3 light_;
 };
 
-Rgb panel_colour(int panel) {
-  static const std::array<Rgb, 6> colours{{{200, 60, 60}, {60, 110, 200}, {220, 160, 40}, {70, 160, 90}, {150, 80, 180}, {40, 170, 170}}};
-  return colours[std::size_t(std::max(panel, 0)) % colours.size()];
-}
-
-}  // namespace
-
-Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, View view) {
-  Box3 box = bounding_box(body.positions);
-  if (cloth.positions.cols() > 0) {
-    const Box3 c = bounding_box(cloth.positions);
-    box.min = box.min.cwiseMin(c.min);
-    box.max = box.max.cwiseMax(c.max);
-  }
-  Image image(image_width(box, height), height, {255, 255, 255});
-  Raster raster(image, make_camera(box, height, view));
+Image render_cpu(const BodyFrame& body, const ClothMesh& cloth, const Camera& camera) {
+  Image image(camera.width, camera.height, {255, 255, 255});
+  Raster raster(image, camera);
   for (Eigen::Index t = 0; t < body.triangles.cols(); ++t)
     raster.triangle(body.positions.col(body.triangles(0, t)), body.positions.col(body.triangles(1, t)),
-                    body.positions.col(body.triangles(2, t)), {200, 190, 180});
+                    body.positions.col(body.triangles(2, t)), kBodyColour);
   for (Eigen::Index q = 0; q < cloth.quads.cols(); ++q) {
     const auto& x = cloth.positions;
-    const Rgb c = panel_colour(cloth.panel.empty() ? 0 : cloth.panel[cloth.quads(0, q)]);
+    const Rgb c = panel_colour(vertex_panel(cloth, cloth.quads(0, q)));
     raster.triangle(x.col(cloth.quads(0, q)), x.col(cloth.quads(1, q)), x.col(cloth.quads(2, q)), c);
     raster.triangle(x.col(cloth.quads(0, q)), x.col(cloth.quads(2, q)), x.col(cloth.quads(3, q)), c);
   }
   return image;
 }
 
+#ifdef CLOTHBENCH_PICTURES_GL
+// one context for the process, created on first use (shader compile and warm-up paid once)
+OffscreenRenderer& gl_renderer() {
+  static OffscreenRenderer renderer;
+  return renderer;
+}
+
+Vec3 unit_colour(Rgb c) { return Vec3(c.r, c.g, c.b) / 255.0f; }
+
+DrawMesh body_draw_mesh(const BodyFrame& body) {
+  DrawMesh m;
+  m.positions = body.positions;
+  m.normals = body.normals.cols() == body.positions.cols() ? body.normals
+                                                           : angle_weighted_normals(body.positions, body.triangles);
+  m.colours = unit_colour(kBodyColour).replicate(1, body.positions.cols());
+  m.triangles = body.triangles;
+  return m;
+}
+
+// the cloth lit on both sides, coloured per panel, with its grid lines where cells are wide enough
+DrawMesh cloth_draw_mesh(const ClothMesh& cloth, Real pixels_per_metre) {
+  DrawMesh m;
+  m.positions = cloth.positions;
+  m.triangles = quad_triangles(cloth.quads);
+  m.normals = angle_weighted_normals(m.positions, m.triangles);
+  m.colours.resize(3, m.positions.cols());
+  for (Eigen::Index v = 0; v < m.positions.cols(); ++v) m.colours.col(v) = unit_colour(panel_colour(vertex_panel(cloth, v)));
+  m.two_sided = true;
+  Pairs lines(2, 4 * cloth.quads.cols());
+  Real length = 0;
+  for (Eigen::Index q = 0; q < cloth.quads.cols(); ++q)
+    for (int k = 0; k < 4; ++k) {
+      lines.col(4 * q + k) << cloth.quads(k, q), cloth.quads((k + 1) % 4, q);
+      length += (m.positions.col(cloth.quads(k, q)) - m.positions.col(cloth.quads((k + 1) % 4, q))).norm();
+    }
+  if (lines.cols() > 0 && length / Real(lines.cols()) * pixels_per_metre >= kMinGridPixels) m.lines = std::move(lines);
+  return m;
+}
+
+Image render_gl(const BodyFrame& body, const ClothMesh& cloth, const Camera& camera) {
+  // our camera as the renderer's: centre of the image and half extents [m]
+  OrthoCamera o;
+  o.right = camera.right;
+  o.up = camera.up;
+  o.toward = camera.toward;
+  o.width = camera.width;
+  o.height = camera.height;
+  o.half_width = Real(camera.width) / (2 * camera.scale);
+  o.half_height = Real(camera.height) / (2 * camera.scale);
+  o.centre = camera.origin + camera.right * o.half_width - camera.up * o.half_height;
+  Lighting lighting;
+  lighting.light = light_direction(camera);
+  const RgbBuffer buffer = gl_renderer().render({body_draw_mesh(body), cloth_draw_mesh(cloth, camera.scale)}, o, lighting);
+  // into bench's Image, pixel by pixel (both are top row first)
+  Image image(buffer.width, buffer.height);
+  for (int y = 0; y < buffer.height; ++y)
+    for (int x = 0; x < buffer.width; ++x) {
+      const std::size_t i = 3 * (std::size_t(y) * std::size_t(buffer.width) + std::size_t(x));
+      image.set(x, y, {buffer.rgb[i], buffer.rgb[i + 1], buffer.rgb[i + 2]});
+    }
+  return image;
+}
+#endif
+
+}  // namespace
+
+PictureRenderer default_picture_renderer() {
+#ifdef CLOTHBENCH_PICTURES_GL
+  return PictureRenderer::kGl;
+#else
+  return PictureRenderer::kCpu;
+#endif
+}
+
+bool has_picture_renderer(PictureRenderer renderer) {
+  return renderer == PictureRenderer::kCpu || default_picture_renderer() == PictureRenderer::kGl;
+}
+
+std::string picture_renderer_name(PictureRenderer renderer) {
+  if (renderer == PictureRenderer::kCpu) return "CPU rasteriser";
+#ifdef CLOTHBENCH_PICTURES_GL
+  OffscreenRenderer& r = gl_renderer();
+  return "OpenGL (OSMesa, " + std::string(r.gl_renderer()) + ", " + std::to_string(r.samples()) + " samples)";
+#else
+  throw std::runtime_error("pictures: OpenGL renderer not built (configure with -DCLOTHBENCH_WITH_GL=ON)");
+#endif
+}
+
+Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, View view) {
+  return render_dressed(body, cloth, height, view, default_picture_renderer());
+}
+
+Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, View view, PictureRenderer renderer) {
+  const Camera camera = make_camera(scene_box(body, cloth), height, view);
+  if (renderer == PictureRenderer::kCpu) return render_cpu(body, cloth, camera);
+#ifdef CLOTHBENCH_PICTURES_GL
+  return render_gl(body, cloth, camera);
+#else
+  throw std::runtime_error("pictures: OpenGL renderer not built (configure with -DCLOTHBENCH_WITH_GL=ON)");
+#endif
+}
+
 void export_dressed(const std::string& path, const BodyFrame& body, const ClothMesh& cloth) {
   std::vector<ExportMesh> meshes{{"body", body.positions, body.triangles, {0.78f, 0.75f, 0.71f}}};
   const int panels = std::max<int>(1, static_cast<int>(cloth.panel_names.size()));
+  const Tris triangles = quad_triangles(cloth.quads);
   for (int p = 0; p < panels; ++p) {
-    // the panel's quads as triangles, vertices renumbered
+    // every vertex of the panel (also those in no quad), renumbered in order
     std::vector<int> index(static_cast<std::size_t>(cloth.positions.cols()), -1);
-    std::vector<int> used, tris;
-    for (Eigen::Index q = 0; q < cloth.quads.cols(); ++q) {
-      if (!cloth.panel.empty() && cloth.panel[cloth.quads(0, q)] != p) continue;
-      for (int k : {0, 1, 2, 0, 2, 3}) {
-        int& i = index[static_cast<std::size_t>(cloth.quads(k, q))];
-        if (i < 0) {
-          i = static_cast<int>(used.size());
-          used.push_back(cloth.quads(k, q));
-        }
-        tris.push_back(i);
+    std::vector<Eigen::Index> used;
+    for (Eigen::Index v = 0; v < cloth.positions.cols(); ++v)
+      if (vertex_panel(cloth, v) == p) {
+        index[std::size_t(v)] = static_cast<int>(used.size());
+        used.push_back(v);
       }
-    }
+    // the panel's triangles in the new numbering
+    std::vector<int> tris;
+    for (Eigen::Index t = 0; t < triangles.cols(); ++t)
+      if (index[std::size_t(triangles(0, t))] >= 0)
+        for (int k = 0; k < 3; ++k) tris.push_back(index[std::size_t(triangles(k, t))]);
     ExportMesh m;
-    m.name = p < static_cast<int>(cloth.panel_names.size()) ? cloth.panel_names[p] : "cloth";
+    m.name = p < static_cast<int>(cloth.panel_names.size()) ? cloth.panel_names[std::size_t(p)] : "cloth";
     m.positions.resize(3, static_cast<Eigen::Index>(used.size()));
     for (std::size_t i = 0; i < used.size(); ++i) m.positions.col(static_cast<Eigen::Index>(i)) = cloth.positions.col(used[i]);
     m.triangles = Eigen::Map<const Tris>(tris.data(), 3, static_cast<Eigen::Index>(tris.size() / 3));

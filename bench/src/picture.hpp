@@ -1,7 +1,12 @@
 #pragma once
 /// Pictures of a dressed body: an orthographic z-buffered render (body grey, cloth coloured per
-/// panel, Lambert shading) from the front, side or back, on the CPU.
+/// panel, a directional light plus ambient) from the front, side or back. Two renderers draw the
+/// same camera: OpenGL through OSMesa (clothbench::render; smooth per-vertex normals, two-sided
+/// cloth, 4x multisampling, cloth grid lines where cells are at least 5 pixels wide), used
+/// whenever the build has CLOTHBENCH_WITH_GL, and a small CPU rasteriser (flat shading, one
+/// sample per pixel), the fallback of builds without it. `picture_renderer_name` says which.
 #include <string>
+#include <vector>
 
 #include "clothbench/sim/body_frame.hpp"
 #include "clothbench/sim/cloth.hpp"
@@ -11,12 +16,30 @@ namespace clothbench {
 
 enum class View { kFront, kSide, kBack };
 
+/// Which renderer draws a picture.
+enum class PictureRenderer { kGl, kCpu };
+
+/// The renderer `render_dressed` uses by default: kGl in builds with CLOTHBENCH_WITH_GL, else kCpu.
+PictureRenderer default_picture_renderer();
+
+/// Whether this build has `renderer` (kCpu always; kGl with CLOTHBENCH_WITH_GL).
+bool has_picture_renderer(PictureRenderer renderer);
+
+/// A one-line name of `renderer` for reports: "OpenGL (OSMesa, <GL renderer>, N samples)" or
+/// "CPU rasteriser". Naming kGl creates its context; throws as `render_dressed` does.
+std::string picture_renderer_name(PictureRenderer renderer);
+
 /// Renders `body` and the cloth (its quads at `cloth.positions`) into a `height`-pixel-tall image
-/// framed on the body's bounding box.
+/// framed on the bounding box of both, with the default renderer.
 Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, View view = View::kFront);
 
-/// Writes the body and the cloth (quads split into triangles, one mesh per panel) as a binary
-/// glTF file (assimp's exporter), for Blender or a web viewer.
+/// As above with a chosen renderer. The OpenGL one keeps one OSMesa context for the process
+/// (created on first use, from one thread at a time); throws std::runtime_error when this build
+/// lacks it or no OSMesa context can be created.
+Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, View view, PictureRenderer renderer);
+
+/// Writes the body and the cloth (one mesh per panel: every vertex of the panel, its quads split
+/// into triangles) as a binary glTF file (assimp's exporter), for Blender or a web viewer.
 void export_dressed(const std::string& path, const BodyFrame& body, const ClothMesh& cloth);
 
 /// Several images side by side (same height), with a 4-pixel white gap.

@@ -1,0 +1,142 @@
+// Pictures of dressed bodies: the OpenGL (OSMesa) renderer against analytic coverage and against
+// the CPU rasteriser, and the glTF export of every cloth vertex.
+#include "picture.hpp"
+
+#include <gtest/gtest.h>
+
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace clothbench {
+namespace {
+
+constexpr Real kRadius = 0.3f;
+const Vec3 kCentre(0, 1, 0);
+
+// a pixel is covered when it is clearly darker than the white background (anti-aliased edges
+// count once they are about half covered)
+bool covered(Rgb c) { return int(c.r) + int(c.g) + int(c.b) < 690; }
+bool red(Rgb c) { return int(c.r) > int(c.g) + 40 && int(c.r) > int(c.b) + 40; }
+
+template <class Test>
+double count(const Image& im, Test test) {
+  double n = 0;
+  for (int y = 0; y < im.height(); ++y)
+    for (int x = 0; x < im.width(); ++x) n += test(im.get(x, y)) ? 1 : 0;
+  return n;
+}
+
+// intersection over union of the pixels passing `test` in two images of one size
+template <class Test>
+double iou(const Image& a, const Image& b, Test test) {
+  double both = 0, either = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) {
+      const bool p = test(a.get(x, y)), q = test(b.get(x, y));
+      both += p && q ? 1 : 0;
+      either += p || q ? 1 : 0;
+    }
+  return either > 0 ? both / either : 0;
+}
+
+// mean brightness of the covered pixels of the image quadrant (right or left, top or bottom)
+double quadrant_brightness(const Image& im, bool right, bool top) {
+  double sum = 0, n = 0;
+  for (int y = 0; y < im.height(); ++y)
+    for (int x = 0; x < im.width(); ++x) {
+      const Rgb c = im.get(x, y);
+      if ((2 * x >= im.width()) != right || (2 * y < im.height()) != top || !covered(c)) continue;
+      sum += (int(c.r) + int(c.g) + int(c.b)) / 3.0;
+      ++n;
+    }
+  return n > 0 ? sum / n : 0;
+}
+
+// a 0.4 m square cloth hanging 5 cm in front of the sphere
+ClothMesh cloth_in_front() {
+  return make_grid_cloth(21, 21, 0.02f, kCentre + Vec3(-0.2f, -0.2f, kRadius + 0.05f), Vec3::UnitX(), Vec3::UnitY());
+}
+
+// why this build or this machine has no OpenGL pictures ("" when it has them)
+std::string gl_unavailable() {
+  if (!has_picture_renderer(PictureRenderer::kGl)) return "built without CLOTHBENCH_WITH_GL";
+  try {
+    picture_renderer_name(PictureRenderer::kGl);
+  } catch (const std::runtime_error& e) {
+    return std::string("no OSMesa context: ") + e.what();
+  }
+  return "";
+}
+
+TEST(Picture, DefaultRendererIsOpenGlWhenBuilt) {
+  EXPECT_TRUE(has_picture_renderer(PictureRenderer::kCpu));
+  EXPECT_EQ(default_picture_renderer() == PictureRenderer::kGl, has_picture_renderer(PictureRenderer::kGl));
+  EXPECT_EQ(picture_renderer_name(PictureRenderer::kCpu), "CPU rasteriser");
+}
+
+TEST(Picture, SphereCoversItsDiscAndIsLitFromTheUpperRight) {
+  if (const std::string why = gl_unavailable(); !why.empty()) GTEST_SKIP() << why;
+  const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 48, 96);
+  for (PictureRenderer r : {PictureRenderer::kGl, PictureRenderer::kCpu}) {
+    const Image im = render_dressed(sphere, ClothMesh{}, 220, View::kFront, r);
+    // the disc: pi r^2 at 220 pixels per 1.1 diameters
+    const double scale = 220.0 / (2.2 * kRadius);
+    const double expected = M_PI * std::pow(kRadius * scale, 2) / (double(im.width()) * im.height());
+    const double fraction = count(im, covered) / (double(im.width()) * im.height());
+    EXPECT_NEAR(fraction / expected, 1.0, 0.02) << picture_renderer_name(r) << ": " << fraction << " vs " << expected;
+    EXPECT_GT(quadrant_brightness(im, true, true), quadrant_brightness(im, false, false) + 20) << picture_renderer_name(r);
+  }
+}
+
+TEST(Picture, OpenGlAndCpuAgreeInCoverage) {
+  if (const std::string why = gl_unavailable(); !why.empty()) GTEST_SKIP() << why;
+  const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 48, 96);
+  const ClothMesh cloth = cloth_in_front();
+  for (View v : {View::kFront, View::kSide, View::kBack}) {
+    const Image gl = render_dressed(sphere, cloth, 240, v, PictureRenderer::kGl);
+    const Image cpu = render_dressed(sphere, cloth, 240, v, PictureRenderer::kCpu);
+    ASSERT_EQ(gl.width(), cpu.width());
+    ASSERT_EQ(gl.height(), cpu.height());
+    EXPECT_GE(iou(gl, cpu, covered), 0.97) << "view " << int(v);
+    if (v == View::kFront) {
+      // the cloth (red, panel 0) hides the sphere behind it in both
+      EXPECT_GT(count(gl, red), 0.9 * count(cpu, red));
+      EXPECT_GE(iou(gl, cpu, red), 0.95);
+    }
+  }
+}
+
+TEST(Picture, RejectsOpenGlWhenNotBuilt) {
+  if (has_picture_renderer(PictureRenderer::kGl)) GTEST_SKIP() << "this build has the OpenGL renderer";
+  const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 8, 16);
+  EXPECT_THROW(render_dressed(sphere, ClothMesh{}, 64, View::kFront, PictureRenderer::kGl), std::runtime_error);
+}
+
+TEST(Picture, GltfKeepsClothVerticesInNoQuad) {
+  // a grid panel plus a vertex tied to it by a spring only, as meshed outlines leave at corners
+  ClothMesh cloth = cloth_in_front();
+  const Eigen::Index nv = cloth.positions.cols();
+  cloth.positions.conservativeResize(3, nv + 1);
+  cloth.positions.col(nv) = cloth.positions.col(nv - 1) + Vec3(0.01f, 0.01f, 0);
+  cloth.panel.push_back(0);
+  const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 12, 24);
+  const std::string path = (std::filesystem::temp_directory_path() / "clothbench_picture_test.glb").string();
+  export_dressed(path, sphere, cloth);
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, 0);
+  ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+  unsigned body = 0, panel = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i)
+    (std::string(scene->mMeshes[i]->mName.C_Str()) == "body" ? body : panel) += scene->mMeshes[i]->mNumVertices;
+  EXPECT_EQ(body, static_cast<unsigned>(sphere.vertex_count()));
+  EXPECT_EQ(panel, static_cast<unsigned>(nv + 1));
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace clothbench
