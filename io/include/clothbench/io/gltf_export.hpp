@@ -17,8 +17,10 @@ struct ExportMesh {
   std::array<float, 3> colour{0.8f, 0.8f, 0.8f};
 };
 
-/// Writes the meshes into one .glb file (written to PATH.tmp first, then renamed). Throws
-/// InputError naming the path when assimp cannot export or the file cannot be written.
+/// Writes the meshes into one .glb file (written to PATH.tmp first, then renamed). Every vertex
+/// reaches the file: those in no triangle are written as points (a second primitive of the mesh).
+/// Throws std::invalid_argument on a vertex index out of range, InputError naming the path when
+/// assimp cannot export or the file cannot be written.
 void export_gltf(const std::string& path, const std::vector<ExportMesh>& meshes);
 
 }  // namespace clothbench
