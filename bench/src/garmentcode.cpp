@@ -224,12 +224,7 @@ class Converter {
     }
     for (const auto& n : order) panel(n, panels.at(n));
     stitches(at(spec, "/pattern/stitches", json::value_t::array));
-    try {
-      validate_pattern(pattern_);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(located(file_, 0, e.what()));
-    }
-    return pattern_;
+    return validated_pattern(std::move(pattern_), file_);
   }
 
  private:

@@ -91,13 +91,7 @@ class Parser {
     if (drafts_.empty()) fail("empty pattern: no panels");
     for (const auto& d : drafts_) pattern_.panels.push_back(d.panel);
     resolve_seams();
-    // the model's own checks back these up; their message has no line, so name the file
-    try {
-      validate_pattern(pattern_);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(located(file_, 0, e.what()));
-    }
-    return pattern_;
+    return validated_pattern(std::move(pattern_), file_);
   }
 
  private:
@@ -487,6 +481,16 @@ class Parser {
 };
 
 }  // namespace
+
+Pattern validated_pattern(Pattern pattern, const std::string& file) {
+  // the model's own checks back up the parsers'; their message has no line, so name the file
+  try {
+    validate_pattern(pattern);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(located(file, 0, e.what()));
+  }
+  return pattern;
+}
 
 Pattern parse_pattern(std::string_view text, const std::string& name) { return Parser(text, name).run(); }
 

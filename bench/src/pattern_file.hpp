@@ -22,6 +22,10 @@ Pattern load_pattern(const std::string& path);
 /// Throws InputError(located(name, line, message)) on the first error.
 Pattern parse_pattern(std::string_view text, const std::string& name);
 
+/// Runs sim's validate_pattern on a pattern read from `file` and returns it unchanged. Throws
+/// InputError "FILE: what is wrong" (no line: the checks see the whole pattern) when it fails.
+Pattern validated_pattern(Pattern pattern, const std::string& file);
+
 /// Writes `pattern` as `.pattern` text: every outline as straight segments from its points, edges
 /// named e0, e1, ... in outline order. parse_pattern reads it back to the same Pattern (numbers are
 /// written with enough digits to round-trip exactly).
