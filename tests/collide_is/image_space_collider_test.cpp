@@ -162,6 +162,26 @@ struct Silhouette {
     }
     return covered != 0 && covered != cells;
   }
+  // the point's pixel is within 1 pixel of an inner silhouette of `view`: two 4-neighbour body
+  // pixels whose depths differ by more than 2 pixels (the surface is seen beyond 63 degrees from
+  // the view axis there, or one body part overhangs another)
+  bool inner(const Vec3& p, int view) const {
+    const MapFrame& f = maps.frame;
+    const int col = static_cast<int>(std::floor(f.front_u(p.x()))), row = static_cast<int>(std::floor(f.map_v(p.y())));
+    const auto body = [&](int c, int r) {
+      return c >= 0 && r >= 0 && c < f.size && r < f.size &&
+             maps.mask[maps.index(view, view == MapSet::kFront ? c : f.size - 1 - c, r)] == MapSet::kBody;
+    };
+    const auto z = [&](int c, int r) { return maps.z[maps.index(view, view == MapSet::kFront ? c : f.size - 1 - c, r)]; };
+    for (int r = row - 1; r <= row + 1; ++r) {
+      for (int c = col - 1; c <= col + 1; ++c) {
+        if (!body(c, r)) continue;
+        if (body(c + 1, r) && std::abs(z(c, r) - z(c + 1, r)) > 2 * f.pixel) return true;
+        if (body(c, r + 1) && std::abs(z(c, r) - z(c, r + 1)) > 2 * f.pixel) return true;
+      }
+    }
+    return false;
+  }
   // a line along z within a pixel of the point crosses more than two body layers
   bool hidden(const Vec3& p) const {
     const MapFrame& f = maps.frame;
@@ -185,18 +205,33 @@ Silhouette silhouette_of(const BodyFrame& body, ColliderOptions options) {
 struct Region {
   long points = 0, false_hits = 0, misses = 0;
 };
+long disagree(const Region (&g)[3]) {
+  long n = 0;
+  for (const auto& r : g) n += r.false_hits + r.misses;
+  return n;
+}
+long points(const Region (&g)[3]) { return g[0].points + g[1].points + g[2].points; }
 struct Report {
-  Region away[3], near[3], hidden[3];   // front (n_z >= 0.5), back (n_z <= -0.5), sides
-  std::vector<double> normal_deg;       // exact contacts within tol of the surface, away
-  std::vector<double> normal_deg_deep;  // exact contacts deeper than tol, away
+  // front (n_z >= 0.5), back (n_z <= -0.5), sides; each point in the first of: near the outer
+  // silhouette, hidden layer, inner silhouette of the map its closest surface faces, away
+  Region away[3], near[3], hidden[3], inner[3];
+  std::vector<double> normal_deg;        // exact contacts within tol of the surface, away
+  std::vector<double> normal_deg_inner;  // exact contacts within tol of the surface, at inner silhouettes
+  std::vector<double> normal_deg_deep;   // exact contacts deeper than tol, away
   std::vector<Contact> contacts;
-  long away_points() const { return away[0].points + away[1].points + away[2].points; }
-  long away_disagree() const {
-    long n = 0;
-    for (const auto& r : away) n += r.false_hits + r.misses;
-    return n;
+  // hit/no-hit disagreements and points away from the outer silhouette and hidden layers (the
+  // issue's reading), and away from inner silhouettes too
+  long outer_points() const { return points(away) + points(inner); }
+  long outer_disagree() const { return disagree(away) + disagree(inner); }
+  long away_points() const { return points(away); }
+  long away_disagree() const { return disagree(away); }
+  long side_misses() const { return away[2].misses + near[2].misses + hidden[2].misses + inner[2].misses; }
+  // normals within 5 degrees over exact contacts within tol away from the outer silhouette and hidden layers
+  std::vector<double> outer_normal_deg() const {
+    std::vector<double> all = normal_deg;
+    all.insert(all.end(), normal_deg_inner.begin(), normal_deg_inner.end());
+    return all;
   }
-  long side_misses() const { return away[2].misses + near[2].misses + hidden[2].misses; }
 };
 
 int region_of(Real nz) { return nz >= 0.5f ? 0 : (nz <= -0.5f ? 1 : 2); }
@@ -207,15 +242,21 @@ Report evaluate(Collider& collider, const BodyFrame& body, const Sample& s, cons
   r.contacts.resize(s.exact.size());
   collider.query(PointsView(s.points), ContactsOut{r.contacts.data(), r.contacts.size()});
   for (std::size_t i = 0; i < s.exact.size(); ++i) {
-    const bool near = sil.near(s.points.col(i)), hidden = !near && sil.hidden(s.points.col(i));
-    Region& g = (near ? r.near : (hidden ? r.hidden : r.away))[region_of(s.normal_z[i])];
+    const Vec3 p = s.points.col(i);
+    const bool near = sil.near(p), hidden = !near && sil.hidden(p);
+    const bool inner = !near && !hidden && sil.inner(p, s.normal_z[i] >= 0 ? MapSet::kFront : MapSet::kBack);
+    Region& g = (near ? r.near : (hidden ? r.hidden : (inner ? r.inner : r.away)))[region_of(s.normal_z[i])];
     ++g.points;
     const Contact &got = r.contacts[i], &want = s.exact[i];
     g.false_hits += got.hit && !want.hit;
     g.misses += !got.hit && want.hit;
     if (near || hidden || !got.hit || !want.hit) continue;
     const double deg = test::angle_deg(got.normal, want.normal);
-    (want.depth > -tol ? r.normal_deg : r.normal_deg_deep).push_back(deg);
+    if (want.depth > -tol) {
+      (inner ? r.normal_deg_inner : r.normal_deg).push_back(deg);
+    } else if (!inner) {
+      r.normal_deg_deep.push_back(deg);
+    }
   }
   // the table the issue asks for
   const char* names[3] = {"front", "back", "sides"};
@@ -223,10 +264,10 @@ Report evaluate(Collider& collider, const BodyFrame& body, const Sample& s, cons
     return std::to_string(g.points) + " " + std::to_string(g.false_hits) + " " + std::to_string(g.misses);
   };
   std::cout << "[ " << collider.name()
-            << " ] region: points false-hits misses, away | near silhouette | hidden layer\n";
+            << " ] region: points false-hits misses, away | near silhouette | hidden layer | inner silhouette\n";
   for (int k = 0; k < 3; ++k)
     std::cout << "[ " << collider.name() << " ] " << std::setw(6) << names[k] << ": " << cells(r.away[k]) << " | "
-              << cells(r.near[k]) << " | " << cells(r.hidden[k]) << "\n";
+              << cells(r.near[k]) << " | " << cells(r.hidden[k]) << " | " << cells(r.inner[k]) << "\n";
   return r;
 }
 
@@ -255,16 +296,23 @@ class ImageSpaceAccuracy : public ::testing::Test {
     delete sample_;
     delete silhouette_;
   }
-  static Report expect_accurate(Collider& c, const char* what, double min_agree = 0.99, double min_within5 = 0.95) {
+  // hit/no-hit agreement away from the outer silhouette and hidden layers >= min_agree (the issue's
+  // figure); normals within 5 degrees on >= min_within5 of the exact contacts within tol away from
+  // inner silhouettes too
+  static Report expect_accurate(Collider& c, const char* what, double min_agree = 0.99, double min_within5 = 0.98) {
     const Report r = evaluate(c, *body_, *sample_, *silhouette_, tol_);
-    const double agree = 1.0 - static_cast<double>(r.away_disagree()) / r.away_points();
+    const double agree = 1.0 - static_cast<double>(r.outer_disagree()) / r.outer_points();
+    const double agree_away = 1.0 - static_cast<double>(r.away_disagree()) / r.away_points();
     const double within5 = fraction_below(r.normal_deg, 5.0);
     std::cout << "[ " << c.name() << " ] " << what << ": hit/no-hit agree on " << 100 * agree << " % of "
-              << r.away_points() << " points away from the silhouette and hidden layers; normals within 5 deg on "
-              << 100 * within5 << " % of " << r.normal_deg.size() << " exact contacts within tol of the surface ("
-              << 100 * fraction_below(r.normal_deg_deep, 5.0) << " % of " << r.normal_deg_deep.size()
-              << " deeper ones); angle median " << quantile(r.normal_deg, 0.5) << " deg, 95% "
-              << quantile(r.normal_deg, 0.95) << " deg\n";
+              << r.outer_points() << " points away from the silhouette and hidden layers (" << 100 * agree_away
+              << " % of " << r.away_points() << " away from inner silhouettes too); normals within 5 deg on "
+              << 100 * within5 << " % of " << r.normal_deg.size()
+              << " exact contacts within tol of the surface away from all silhouettes ("
+              << 100 * fraction_below(r.outer_normal_deg(), 5.0) << " % of " << r.outer_normal_deg().size()
+              << " with those at inner silhouettes; " << 100 * fraction_below(r.normal_deg_deep, 5.0) << " % of "
+              << r.normal_deg_deep.size() << " deeper ones); angle median " << quantile(r.normal_deg, 0.5)
+              << " deg, 95% " << quantile(r.normal_deg, 0.95) << " deg\n";
     EXPECT_GE(agree, min_agree);
     EXPECT_GE(within5, min_within5);
     return r;
@@ -331,7 +379,7 @@ TEST_F(ImageSpaceAccuracy, PapersDepthTestAlongZAgreesLessOften) {
   const Report a = expect_accurate(papers, "papers' z test", 0.97, 0.0);
   auto plane = make_is_cpu_collider(ColliderOptions{});
   const Report b = evaluate(*plane, *body_, *sample_, *silhouette_, tol_);
-  EXPECT_LT(b.away_disagree(), a.away_disagree());
+  EXPECT_LT(b.outer_disagree(), a.outer_disagree());
   EXPECT_GT(fraction_below(b.normal_deg, 5.0), fraction_below(a.normal_deg, 5.0));
 }
 
