@@ -31,14 +31,37 @@ double scene_fps(ExperimentContext&, const std::string& scene) {
 }
 
 // an H.264 video of a numbered PNG sequence, when ffmpeg is on the PATH (skipped with a note otherwise)
-void make_video(const std::string& pattern, const std::string& mp4, double fps) {
+// (true when the video was written)
+bool make_video(const std::string& pattern, const std::string& mp4, double fps) {
   if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) {
     std::cerr << "  note: ffmpeg not installed, no video " << mp4 << " (apt-get install ffmpeg)\n";
-    return;
+    return false;
   }
   const std::string cmd = "ffmpeg -loglevel error -y -framerate " + num(fps, 0) + " -i '" + pattern +
                           "' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + mp4 + "'";
-  if (std::system(cmd.c_str()) != 0) std::cerr << "  warning: ffmpeg failed for " << mp4 << "\n";
+  if (std::system(cmd.c_str()) == 0) return true;
+  std::cerr << "  warning: ffmpeg failed for " << mp4 << "\n";
+  return false;
+}
+
+// one animation frame kept for the picture sequence: body and cloth vertex positions [m] (3 x n)
+struct SequenceFrame {
+  long frame;
+  Points3 body_positions, body_normals, cloth_positions;
+};
+
+// PREFIX-frameNNN.png per kept frame (front view), drawn on the run's final body and mesh topology
+void write_sequence(const std::vector<SequenceFrame>& sequence, const RunResult& r, const std::string& prefix) {
+  BodyFrame body = r.final_body;
+  ClothMesh mesh = r.mesh;
+  for (const auto& f : sequence) {
+    body.positions = f.body_positions;
+    body.normals = f.body_normals;
+    mesh.positions = f.cloth_positions;
+    char name[32];
+    std::snprintf(name, sizeof name, "-frame%03ld.png", f.frame);
+    render_dressed(body, mesh, 200, View::kFront).write_png(prefix + name);
+  }
 }
 
 void walking_t2(ExperimentContext& ctx) {
@@ -52,6 +75,7 @@ void walking_t2(ExperimentContext& ctx) {
   MarkdownTable t({"garment", "collider", "vertices", "frames", "steps/frame", "s/frame", "frames/s", "skinning ms/frame",
                    "maps or refit ms/frame", "cloth ms/frame (CD&R + CS)", "paper s/frame", "paper frames/s",
                    "inside [%] end", "strain max [%] (animation)"});
+  std::string media;  // where the pictures and videos went
   std::vector<std::string> sets_quick;
   if (ctx.quick()) sets_quick = {"body.start_s=0.1", "body.end_s=0.2", "stop.max_iterations=60"};
   for (std::size_t i = 0; i < 2; ++i) {
@@ -60,17 +84,16 @@ void walking_t2(ExperimentContext& ctx) {
       std::vector<std::string> sets = sets_quick;
       sets.push_back("garment.vertices=" + std::to_string(g.vertices));
       // the is-cpu run also leaves a frame sequence (every frame, front view) and, where Debian's
-      // ffmpeg is installed, a short video of it
+      // ffmpeg is installed, a short video of it; frames are only copied during the run and drawn
+      // after it, so the pictures stay out of the measured s/frame
       RunOptions options;
       const bool pictures = c == "is-cpu";
       const std::string stem = std::string("pictures/walking-t2-") + (i ? "dress_sleeves" : "skirt");
+      std::vector<SequenceFrame> sequence;
       if (pictures)
         options.on_frame = [&](long frame, double, const BodyFrame& body, const Simulator& sim) {
-          ClothMesh mesh = sim.mesh();
-          mesh.positions = sim.positions();
-          char name[32];
-          std::snprintf(name, sizeof name, "-frame%03ld.png", frame);
-          render_dressed(body, mesh, 200, View::kFront).write_png(ctx.path(stem + "/" + stem.substr(9) + name));
+          if (frame == 1) sequence.clear();  // a repetition starts over
+          sequence.push_back({frame, body.positions, body.normals, sim.positions()});
         };
       const RunResult& r = ctx.run(g.scene, c, sets, options);
       const double frames = double(std::max(1L, r.frames));
@@ -83,7 +106,11 @@ void walking_t2(ExperimentContext& ctx) {
              r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2), num(100 * r.animate_strain_max, 1)});
       ctx.add_row(result_row(r, std::string("walking-t2/") + (i ? "dress_sleeves" : "skirt") + "/" + c));
       if (pictures) {
-        make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"), scene_fps(ctx, g.scene));
+        write_sequence(sequence, r, ctx.path(stem + "/" + stem.substr(9)));
+        const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"),
+                                      scene_fps(ctx, g.scene));
+        media += "- " + std::string(g.product) + ": [end state](" + stem + ".png), " + std::to_string(sequence.size()) +
+                 " frames in `" + stem + "/`" + (video ? ", [video](" + stem + ".mp4)" : std::string(", no video (ffmpeg absent)")) + "\n";
         std::vector<Image> views;
         for (View v : {View::kFront, View::kSide}) views.push_back(render_dressed(r.final_body, r.mesh, 360, v));
         side_by_side(views).write_png(ctx.path(stem + ".png"));
@@ -96,7 +123,12 @@ void walking_t2(ExperimentContext& ctx) {
             "animation time and the cloth takes `steps/frame` steps of dt per frame. s/frame = wall time of the "
             "animation phase per frame: skinning (LBS, our analogue of the paper's reading the body file), map "
             "re-render or BVH refit, and cloth (CD&R + CS). The paper's figures include rendering the scene on "
-            "screen, ours do not.\n\n" + t.str());
+            "screen, ours do not.\n\n" + t.str() +
+                (media.empty() ? std::string()
+                               : "\nPictures of the is-cpu runs (front view; " +
+                                     picture_renderer_name(default_picture_renderer()) +
+                                     "; frames are copied during the run and drawn after it, outside s/frame):\n\n" +
+                                     media));
 }
 
 // how far the cloth's centre trails the sphere's centre along the motion [m]
