@@ -99,6 +99,11 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
   row["inside_pct"] = r.accuracy.inside_pct;
   row["depth_max_mm"] = r.accuracy.depth_max_mm;
   row["depth_p95_mm"] = r.accuracy.depth_p95_mm;
+  row["crossings"] = r.accuracy.crossings;
+  row["crossings_pct"] = r.accuracy.crossings_pct;
+  row["structural_springs"] = r.accuracy.segments;
+  row["oracle_depth_ms"] = r.accuracy.depth_ms;
+  row["oracle_crossings_ms"] = r.accuracy.crossings_ms;
   row["seam_gap_max_mm"] = r.seam_gap_max_mm;
   row["strain_max"] = r.strain_max;
   row["strain_p99"] = r.strain_p99;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "report.hpp"
+
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -136,6 +138,22 @@ TEST(Crossings, FollowTheBody) {
   Accuracy a;
   oracle.measure_crossings(cloth.positions, structural_springs(cloth), a);
   EXPECT_EQ(a.crossings, 0u);
+}
+
+TEST(Crossings, ReachTheJsonRowUnlessDiverged) {
+  RunResult r;
+  const ClothMesh cloth = grid_at(0);
+  const Oracle oracle(box_body());
+  r.accuracy = oracle.measure(cloth.positions);
+  oracle.measure_crossings(cloth.positions, structural_springs(cloth), r.accuracy);
+  nlohmann::json row = result_row(r, "box/grid");
+  EXPECT_EQ(row["crossings"], 12);
+  EXPECT_EQ(row["structural_springs"], 84);
+  EXPECT_NEAR(row["crossings_pct"].get<double>(), 100.0 * 12 / 84, 1e-9);
+  EXPECT_TRUE(row.contains("oracle_depth_ms") && row.contains("oracle_crossings_ms"));
+  r.divergence = Divergence{};
+  row = result_row(r, "box/grid");
+  EXPECT_FALSE(row.contains("crossings"));
 }
 
 }  // namespace
