@@ -168,18 +168,16 @@ struct Silhouette {
   bool inner(const Vec3& p, int view) const {
     const MapFrame& f = maps.frame;
     const int col = static_cast<int>(std::floor(f.front_u(p.x()))), row = static_cast<int>(std::floor(f.map_v(p.y())));
+    const auto at = [&](int c, int r) { return maps.index(view, view == MapSet::kFront ? c : f.size - 1 - c, r); };
     const auto body = [&](int c, int r) {
-      return c >= 0 && r >= 0 && c < f.size && r < f.size &&
-             maps.mask[maps.index(view, view == MapSet::kFront ? c : f.size - 1 - c, r)] == MapSet::kBody;
+      return c >= 0 && r >= 0 && c < f.size && r < f.size && maps.mask[at(c, r)] == MapSet::kBody;
     };
-    const auto z = [&](int c, int r) { return maps.z[maps.index(view, view == MapSet::kFront ? c : f.size - 1 - c, r)]; };
-    for (int r = row - 1; r <= row + 1; ++r) {
-      for (int c = col - 1; c <= col + 1; ++c) {
-        if (!body(c, r)) continue;
-        if (body(c + 1, r) && std::abs(z(c, r) - z(c + 1, r)) > 2 * f.pixel) return true;
-        if (body(c, r + 1) && std::abs(z(c, r) - z(c, r + 1)) > 2 * f.pixel) return true;
-      }
-    }
+    const auto step = [&](int c, int r, int c2, int r2) {
+      return body(c2, r2) && std::abs(maps.z[at(c, r)] - maps.z[at(c2, r2)]) > 2 * f.pixel;
+    };
+    for (int r = row - 1; r <= row + 1; ++r)
+      for (int c = col - 1; c <= col + 1; ++c)
+        if (body(c, r) && (step(c, r, c + 1, r) || step(c, r, c, r + 1))) return true;
     return false;
   }
   // a line along z within a pixel of the point crosses more than two body layers

@@ -157,9 +157,9 @@ void expect_same_maps(const BodyFrame& body, const ColliderOptions& options, con
   const MapDiff d = compare(gl, cpu);
   const double identical = d.covered ? static_cast<double>(d.identical) / d.covered : 0.0;
   std::cout << "[ maps ] " << what << " " << options.map_size << "^2 " << (options.float_maps ? "float" : "8-bit")
-            << ": covered " << d.covered << ", coverage mismatches " << d.coverage_mismatch << ", depth bit-identical on "
-            << 100 * identical << " %, |gl-cpu| 99.9% " << d.depth_p999 * 1e6 << " um, max " << d.depth_max * 1e6
-            << " um\n";
+            << ": covered " << d.covered << ", coverage mismatches " << d.coverage_mismatch
+            << ", depth bit-identical on " << 100 * identical << " %, |gl-cpu| 99.9% " << d.depth_p999 * 1e6
+            << " um, max " << d.depth_max * 1e6 << " um\n";
   EXPECT_GT(d.covered, 1000);
   EXPECT_EQ(d.coverage_mismatch, 0);
   EXPECT_LT(d.depth_max, 10e-6);
