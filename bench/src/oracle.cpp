@@ -143,6 +143,28 @@ void Oracle::measure_crossings(PointsView vertices, const Pairs& segments, Accur
   a.crossings_ms = clock.ms();
 }
 
+void Oracle::measure_faces(PointsView vertices, const Quads& quads, Accuracy& a) const {
+  if (quads.cols() > 0 && (quads.minCoeff() < 0 || std::size_t(quads.maxCoeff()) >= vertices.count))
+    throw std::invalid_argument("oracle: a quad index lies outside the " + std::to_string(vertices.count) +
+                                " cloth vertices");
+  // midpoints as the face-body queries compute them
+  Points3 mid(3, quads.cols());
+  for (Eigen::Index q = 0; q < quads.cols(); ++q)
+    mid.col(q) = 0.25f * (vertices[std::size_t(quads(0, q))] + vertices[std::size_t(quads(1, q))] +
+                          vertices[std::size_t(quads(2, q))] + vertices[std::size_t(quads(3, q))]);
+  std::vector<Real> depth;
+  signed_distance(mid, depth);
+  // non-finite midpoints are not tested
+  a.faces = 0;
+  a.faces_inside = 0;
+  for (const Real d : depth) {
+    if (!std::isfinite(d)) continue;
+    ++a.faces;
+    a.faces_inside += d < 0 ? 1 : 0;
+  }
+  a.faces_inside_pct = a.faces > 0 ? 100.0 * double(a.faces_inside) / double(a.faces) : 0.0;
+}
+
 Accuracy Oracle::measure(PointsView points) const {
   const Stopwatch clock;
   std::vector<Real> depth;

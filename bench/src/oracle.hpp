@@ -29,6 +29,9 @@ struct Accuracy {
   std::size_t segments = 0;  ///< finite segments tested for crossings (structural springs)
   std::size_t crossings = 0; ///< segments that meet a body triangle; a segment wholly inside meets none
   double crossings_pct = 0;  ///< crossings / segments [%]; 0 when none were tested
+  std::size_t faces = 0;         ///< finite cloth quads tested by measure_faces
+  std::size_t faces_inside = 0;  ///< quads whose midpoint (mean of the 4 corners) is inside the body
+  double faces_inside_pct = 0;   ///< faces_inside / faces [%]; 0 when none were tested
   double depth_ms = 0;       ///< cost of the signed-distance query of measure() [ms]
   double crossings_ms = 0;   ///< cost of the segment query of measure_crossings() [ms]
 };
@@ -66,6 +69,11 @@ class Oracle {
   /// Fills a.segments, a.crossings, a.crossings_pct and a.crossings_ms for the segments (see
   /// segment_crossings; non-finite segments are not counted as tested). Throws as segment_crossings.
   void measure_crossings(PointsView vertices, const Pairs& segments, Accuracy& a) const;
+  /// Fills a.faces, a.faces_inside and a.faces_inside_pct: penetrating faces, quads (4 x nq indices
+  /// into `vertices` [m]) whose midpoint is inside, measured whether or not the run queried
+  /// midpoints (dressing section 6). Quads with a non-finite corner are not tested. Throws
+  /// std::invalid_argument for an index outside the vertices.
+  void measure_faces(PointsView vertices, const Quads& quads, Accuracy& a) const;
   /// True when the Embree point query answers; false for the brute-force fallback.
   static bool uses_embree();
 

@@ -102,6 +102,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
   row["crossings"] = r.accuracy.crossings;
   row["crossings_pct"] = r.accuracy.crossings_pct;
   row["structural_springs"] = r.accuracy.segments;
+  row["faces_inside_pct"] = r.accuracy.faces_inside_pct;
   row["oracle_depth_ms"] = r.accuracy.depth_ms;
   row["oracle_crossings_ms"] = r.accuracy.crossings_ms;
   row["seam_gap_max_mm"] = r.seam_gap_max_mm;

@@ -1,4 +1,5 @@
-// The oracle's crossings: structural springs through body triangles, counted by hand on a box.
+// The oracle's crossings (structural springs through body triangles) and penetrating faces, counted
+// by hand on a box.
 #include "oracle.hpp"
 
 #include <gtest/gtest.h>
@@ -81,6 +82,26 @@ TEST(Crossings, GridThroughABoxCountedByHand) {
   EXPECT_GT(all.crossings, a.crossings);
 }
 
+TEST(Crossings, PenetratingFacesCountedByHand) {
+  // 6 x 6 vertices 0.12 m apart from -0.3: vertices inside at +-0.06 (2 x 2), quad midpoints
+  // inside at -0.12, 0, 0.12 (3 x 3)
+  ClothMesh cloth = make_grid_cloth(6, 6, 0.12f, Vec3(-0.3f, 0, -0.3f), Vec3::UnitX(), Vec3::UnitZ());
+  ASSERT_EQ(cloth.quads.cols(), 25);
+  const Oracle oracle(box_body());
+  Accuracy a = oracle.measure(cloth.positions);
+  oracle.measure_faces(cloth.positions, cloth.quads, a);
+  EXPECT_EQ(a.inside, 4u);
+  EXPECT_EQ(a.faces, 25u);
+  EXPECT_EQ(a.faces_inside, 9u);
+  EXPECT_NEAR(a.faces_inside_pct, 100.0 * 9 / 25, 1e-9);
+  // a non-finite corner leaves its quad untested; a bad index throws
+  cloth.positions.col(0).setConstant(std::numeric_limits<Real>::quiet_NaN());
+  oracle.measure_faces(cloth.positions, cloth.quads, a);
+  EXPECT_EQ(a.faces, 24u);
+  cloth.quads(2, 5) = 36;
+  EXPECT_THROW(oracle.measure_faces(cloth.positions, cloth.quads, a), std::invalid_argument);
+}
+
 TEST(Crossings, ClothOutsideCrossesNothing) {
   const ClothMesh cloth = grid_at(kHalf + 0.05f);
   const Oracle oracle(box_body());
@@ -150,7 +171,7 @@ TEST(Crossings, ReachTheJsonRowUnlessDiverged) {
   EXPECT_EQ(row["crossings"], 12);
   EXPECT_EQ(row["structural_springs"], 84);
   EXPECT_NEAR(row["crossings_pct"].get<double>(), 100.0 * 12 / 84, 1e-9);
-  EXPECT_TRUE(row.contains("oracle_depth_ms") && row.contains("oracle_crossings_ms"));
+  EXPECT_TRUE(row.contains("oracle_depth_ms") && row.contains("oracle_crossings_ms") && row.contains("faces_inside_pct"));
   r.divergence = Divergence{};
   row = result_row(r, "box/grid");
   EXPECT_FALSE(row.contains("crossings"));

@@ -1,11 +1,14 @@
 // EmbreeDistance::segment_crossings (one occlusion ray per segment) against every triangle.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <limits>
 #include <random>
 #include <vector>
 
 #include "clothbench/collide_os/embree_collider.hpp"
+#include "clothbench/io/body_loader.hpp"
+#include "clothbench/io/data_root.hpp"
 #include "oracle.hpp"
 #include "surface_points.hpp"
 
@@ -79,6 +82,18 @@ TEST(EmbreeSegments, FollowARefittedBody) {
   wide.positions.row(0) *= 1.3f;
   embree.update_body(wide);
   expect_agreement(embree, wide, random_segments(wide, 3000, 6));
+}
+
+TEST(EmbreeSegments, AgreeWithEveryTriangleOnTheWalkingBody) {
+  // thin fingers and 26,756 triangles; a frame of the walk, refitted from the rest pose
+  const std::string path = data_path("body/mh_female_walk.glb");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "data root absent: " << path << " not found (set CLOTHBENCH_DATA)";
+  const BodyModel model = load_body(path);
+  const BodyFrame walk = model.frame(model.animation_index("walk_07_01"), 2.0);
+  EmbreeDistance embree;
+  embree.set_body(model.rest());
+  embree.update_body(walk);
+  expect_agreement(embree, walk, random_segments(walk, 400, 7));
 }
 
 TEST(EmbreeSegments, NothingBeforeABodyAndForNonFiniteEnds) {
