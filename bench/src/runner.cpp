@@ -242,7 +242,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
 }
 
 // accuracy of the end state against the exact body (vertices, and quad midpoints with face queries;
-// crossings of the structural springs)
+// crossings of the structural springs; penetrating faces)
 void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   Oracle oracle(r.final_body);
   Points3 points = sim.positions();
@@ -253,6 +253,7 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   }
   r.accuracy = oracle.measure(points);
   oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), r.accuracy);
+  oracle.measure_faces(sim.positions(), sim.mesh().quads, r.accuracy);
   r.seam_gap_max_mm = 1e3 * double(sim.seam_gap_max());
   const StrainStats strain = sim.strain();
   r.strain_max = strain.max;
