@@ -20,6 +20,7 @@ constexpr float kSubpixel = 1 << kSubpixelBits;
 // llvmpipe's JIT fuses its multiply-adds (llvm.fmuladd) where the host has FMA instructions
 bool host_fuses_multiply_add() {
 #if defined(__x86_64__) || defined(__i386__)
+  __builtin_cpu_init();
   return __builtin_cpu_supports("fma");
 #else
   return true;
