@@ -75,7 +75,8 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g) {
   std::vector<Config> configs;
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (int size : {128, 256, 320, 512, 1024})
-      configs.push_back({is, is + " " + std::to_string(size) + " px", {"collider.map_size=" + std::to_string(size)}, false});
+      configs.push_back(
+          {is, is + " " + std::to_string(size) + " px", {"collider.map_size=" + std::to_string(size)}, false});
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (const char* tol : {"0.0025", "0.01"})
       configs.push_back({is, is + " 320 px tol " + std::string(tol), {std::string("collider.tol=") + tol}, false});
@@ -106,7 +107,8 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g) {
 
 // one chart: time against one accuracy axis per collider family, with that pair's front
 void pareto_chart(ExperimentContext& ctx, const Garment& g, const std::vector<Point>& pts, Axis axis,
-                  bool Point::*front_flag, const std::string& suffix, const std::string& what, const std::string& ylabel) {
+                  bool Point::*front_flag, const std::string& suffix, const std::string& what,
+                  const std::string& ylabel) {
   std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> by_family;
   std::vector<std::pair<double, double>> front;
   for (const auto& p : pts) {
@@ -117,16 +119,17 @@ void pareto_chart(ExperimentContext& ctx, const Garment& g, const std::vector<Po
     if (p.*front_flag) front.emplace_back(p.seconds, p.*axis);
   }
   nlohmann::json series = nlohmann::json::array();
-  for (const auto& [label, xy] : by_family) series.push_back({{"label", label}, {"x", xy.first}, {"y", xy.second}, {"style", "o"}});
+  for (const auto& [label, xy] : by_family)
+    series.push_back({{"label", label}, {"x", xy.first}, {"y", xy.second}, {"style", "o"}});
   std::sort(front.begin(), front.end());
   std::vector<double> fx, fy;
   for (const auto& [x, y] : front) fx.push_back(x), fy.push_back(y);
   series.push_back({{"label", "Pareto front"}, {"x", fx}, {"y", fy}, {"style", "k--"}});
   ctx.chart(std::string("pareto-") + g.name + suffix, {{"title", std::string("Speed vs ") + what + ": " + g.name},
-                                                        {"xlabel", "total time [s]"},
-                                                        {"ylabel", ylabel},
-                                                        {"logx", true},
-                                                        {"series", series}});
+                                                       {"xlabel", "total time [s]"},
+                                                       {"ylabel", ylabel},
+                                                       {"logx", true},
+                                                       {"series", series}});
 }
 
 void pareto(ExperimentContext& ctx) {

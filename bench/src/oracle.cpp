@@ -70,7 +70,8 @@ struct Oracle::Impl {
       bool hit = false;
       for (int t = 0; t < body.triangle_count() && !hit && a.allFinite() && b.allFinite(); ++t)
         hit = segment_crosses_triangle(a, b, body.positions.col(body.triangles(0, t)),
-                                       body.positions.col(body.triangles(1, t)), body.positions.col(body.triangles(2, t)));
+                                       body.positions.col(body.triangles(1, t)),
+                                       body.positions.col(body.triangles(2, t)));
       out[k] = hit ? 1 : 0;
     }
   }
@@ -135,7 +136,8 @@ void Oracle::measure_crossings(PointsView vertices, const Pairs& segments, Accur
   a.segments = 0;
   a.crossings = 0;
   for (Eigen::Index k = 0; k < segments.cols(); ++k) {
-    if (!vertices[std::size_t(segments(0, k))].allFinite() || !vertices[std::size_t(segments(1, k))].allFinite()) continue;
+    if (!vertices[std::size_t(segments(0, k))].allFinite() || !vertices[std::size_t(segments(1, k))].allFinite())
+      continue;
     ++a.segments;
     a.crossings += crosses[std::size_t(k)];
   }

@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include "report.hpp"
-
 #include <limits>
 #include <stdexcept>
 #include <vector>
+
+#include "report.hpp"
 
 namespace clothbench {
 namespace {
@@ -171,7 +171,8 @@ TEST(Crossings, ReachTheJsonRowUnlessDiverged) {
   EXPECT_EQ(row["crossings"], 12);
   EXPECT_EQ(row["structural_springs"], 84);
   EXPECT_NEAR(row["crossings_pct"].get<double>(), 100.0 * 12 / 84, 1e-9);
-  EXPECT_TRUE(row.contains("oracle_depth_ms") && row.contains("oracle_crossings_ms") && row.contains("faces_inside_pct"));
+  EXPECT_TRUE(row.contains("oracle_depth_ms") && row.contains("oracle_crossings_ms") &&
+              row.contains("faces_inside_pct"));
   r.divergence = Divergence{};
   row = result_row(r, "box/grid");
   EXPECT_FALSE(row.contains("crossings"));

@@ -18,8 +18,8 @@ namespace {
 // does the segment meet any triangle: every triangle tried
 bool brute_crosses(const BodyFrame& body, const Vec3& a, const Vec3& b) {
   for (int t = 0; t < body.triangle_count(); ++t)
-    if (segment_crosses_triangle(a, b, body.positions.col(body.triangles(0, t)), body.positions.col(body.triangles(1, t)),
-                                 body.positions.col(body.triangles(2, t))))
+    if (segment_crosses_triangle(a, b, body.positions.col(body.triangles(0, t)),
+                                 body.positions.col(body.triangles(1, t)), body.positions.col(body.triangles(2, t))))
       return true;
   return false;
 }
@@ -58,7 +58,8 @@ void expect_agreement(const EmbreeDistance& embree, const BodyFrame& body, const
       continue;
     ++compared;
     crossing += expected ? 1 : 0;
-    EXPECT_EQ(crosses[std::size_t(k)] != 0, expected) << "segment " << k << ": " << a.transpose() << " -> " << b.transpose();
+    EXPECT_EQ(crosses[std::size_t(k)] != 0, expected)
+        << "segment " << k << ": " << a.transpose() << " -> " << b.transpose();
   }
   // nearly every segment is robust, and a fair share of them cross
   EXPECT_GT(compared, 0.99 * double(s.pairs.cols()));
@@ -87,7 +88,8 @@ TEST(EmbreeSegments, FollowARefittedBody) {
 TEST(EmbreeSegments, AgreeWithEveryTriangleOnTheWalkingBody) {
   // thin fingers and 26,756 triangles; a frame of the walk, refitted from the rest pose
   const std::string path = data_path("body/mh_female_walk.glb");
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "data root absent: " << path << " not found (set CLOTHBENCH_DATA)";
+  if (!std::filesystem::exists(path))
+    GTEST_SKIP() << "data root absent: " << path << " not found (set CLOTHBENCH_DATA)";
   const BodyModel model = load_body(path);
   const BodyFrame walk = model.frame(model.animation_index("walk_07_01"), 2.0);
   EmbreeDistance embree;
