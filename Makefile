@@ -35,7 +35,7 @@ test-sanitize:
 # new inputs go to build-fuzz/corpus, crashes to build-fuzz/artifacts; exit 1 on any finding
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS := scene pattern garmentcode
+FUZZ_TARGETS := scene pattern garmentcode overrides body
 FUZZ_CMAKE_FLAGS := -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
   -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" \
   -DCLOTHBENCH_BUILD_FUZZ=ON -DCLOTHBENCH_BUILD_TESTS=OFF -DCLOTHBENCH_BUILD_BENCHMARKS=OFF \
