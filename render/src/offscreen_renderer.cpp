@@ -11,6 +11,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace clothbench {
 
@@ -30,8 +31,8 @@ void main() {
 }
 )";
 
-// Lambert with ambient; two-sided surfaces turn their normal toward the camera first; lines
-// (shade < 1) are drawn unlit
+// Lambert with ambient; two-sided surfaces turn their normal toward the camera first; lines are
+// drawn unlit in their colour x shade
 constexpr const char* kFragmentShader = R"(#version 330 core
 in vec3 n_world;
 in vec3 albedo;

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace clothbench {
 namespace {
@@ -80,9 +81,10 @@ TEST(Picture, DefaultRendererIsOpenGlWhenBuilt) {
 }
 
 TEST(Picture, SphereCoversItsDiscAndIsLitFromTheUpperRight) {
-  if (const std::string why = gl_unavailable(); !why.empty()) GTEST_SKIP() << why;
   const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 48, 96);
-  for (PictureRenderer r : {PictureRenderer::kGl, PictureRenderer::kCpu}) {
+  std::vector<PictureRenderer> renderers{PictureRenderer::kCpu};
+  if (gl_unavailable().empty()) renderers.push_back(PictureRenderer::kGl);
+  for (PictureRenderer r : renderers) {
     const Image im = render_dressed(sphere, ClothMesh{}, 220, View::kFront, r);
     // the disc: pi r^2 at 220 pixels per 1.1 diameters
     const double scale = 220.0 / (2.2 * kRadius);

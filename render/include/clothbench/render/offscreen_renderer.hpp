@@ -67,7 +67,8 @@ class OffscreenRenderer {
   OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
 
   /// Draws the meshes (depth-tested, near/far fitted to them) and reads the picture back.
-  /// Throws std::invalid_argument on a non-positive image size or inconsistent mesh arrays.
+  /// Throws std::invalid_argument on a non-positive image size or inconsistent mesh arrays, and
+  /// std::runtime_error when the framebuffer of that size cannot be made.
   RgbBuffer render(const std::vector<DrawMesh>& meshes, const OrthoCamera& camera, const Lighting& lighting = {});
 
   /// Colour samples per pixel the framebuffer uses (1 when the context has no multisampling).
