@@ -1,5 +1,6 @@
 // Super-elasticity limits (dressing section 4, walking section 3): velocity, directional and
 // position (Provot) corrections of over-stretched springs.
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
@@ -28,17 +29,25 @@ Limit parse_limit(const std::string& name) {
                               "' (none, stiff, position, velocity, velocity-zero, directional)");
 }
 
-std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa, Real wb) {
-  // walking Eq. 5 averages; with unequal masses the mass-weighted mean keeps momentum and never adds
-  // kinetic energy (the papers' points all have one mass, where both are the same)
+std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa, Real wb,
+                                             Real target) {
+  // walking Eq. 5 averages, keeping the relative velocity `target`; with unequal masses the mass-weighted
+  // mean keeps momentum (the papers' points all have one mass, where both are the same)
   const Real mean = (wa * va + wb * vb) / (wa + wb);
+  const std::pair<Real, Real> average{mean - target * wb / (wa + wb), mean + target * wa / (wa + wb)};
   switch (limit) {
     case Limit::kVelocityZero: return {0, 0};  // dressing 4.3
-    case Limit::kVelocity: return {mean, mean};  // walking Eq. 5
-    case Limit::kDirectional:
-      // walking section 3: perpendicular springs average, others: rear point catches up
-      if (std::abs(cos_alpha) < 0.3f) return {mean, mean};
-      return cos_alpha > 0 ? std::pair<Real, Real>{vb, vb} : std::pair<Real, Real>{va, va};
+    case Limit::kVelocity: return average;       // walking Eq. 5
+    case Limit::kDirectional: {
+      // walking Eq. 6 rules: perpendicular springs average, others: the rear point catches up with the front
+      if (std::abs(cos_alpha) < 0.3f) return average;
+      const std::pair<Real, Real> catch_up =
+          cos_alpha > 0 ? std::pair<Real, Real>{vb - target, vb} : std::pair<Real, Real>{va, va + target};
+      // our guard: catching up must not add kinetic energy to the pair (it does not keep momentum, and
+      // taken literally it diverges on a cloth draped over a sphere); where it would, Eq. 5 instead
+      const auto energy = [&](Real a, Real b) { return wa * a * a + wb * b * b; };
+      return energy(catch_up.first, catch_up.second) > energy(va, vb) ? average : catch_up;
+    }
     default: return {va, vb};
   }
 }
@@ -60,13 +69,19 @@ void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, E
   const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
   // the length this step would give (Eq. 3 position update): no spring may end it over-elongated
   const Vec3 d = x_.col(b) - x_.col(a);  // p12 = p2 - p1
-  const Vec3 d_next = d + dt_ * (v_.col(b) - v_.col(a));
-  if (!(d_next.norm() > max_len_factor * mesh_.rest_length[s])) return;
+  const Vec3 dv = v_.col(b) - v_.col(a);
+  const Real max_len = max_len_factor * mesh_.rest_length[s];
+  if (!((d + dt_ * dv).norm() > max_len)) return;
   const Real len = d.norm();
   if (!(len > 0)) return;
   const Vec3 u = d / len;
   const Real va = v_.col(a).dot(u), vb = v_.col(b).dot(u);
-  if (vb - va <= 0) return;  // only further elongation is forbidden: a spring may shorten
+  // the relative velocity along the spring that ends the step at exactly max_len, the perpendicular
+  // motion included (zero leaves a spring already past it there, and rotation lengthens it every step)
+  const Real perp2 = (dv - (vb - va) * u).squaredNorm() * dt_ * dt_;
+  const Real target =
+      l == Limit::kVelocityZero ? Real(0) : (std::sqrt(std::max(max_len * max_len - perp2, Real(0))) - len) / dt_;
+  if (vb - va <= target) return;  // only further elongation is forbidden: a spring may shorten
   if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
   Real na = va, nb = vb;
   if (l == Limit::kDirectional) {
@@ -76,17 +91,18 @@ void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, E
     const int rear = cos_a > 0 ? a : b;
     if (std::abs(cos_a) >= 0.3f && held_[static_cast<std::size_t>(rear)]) {
       // a held rear point cannot catch up: the front follows it and is held in turn (our reading)
-      na = nb = rear == a ? va : vb;
+      na = rear == a ? va : vb - target;
+      nb = na + target;
       held_[static_cast<std::size_t>(rear == a ? b : a)] = 1;
     } else {
-      std::tie(na, nb) = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b]);
+      std::tie(na, nb) = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b], target);
     }
   } else {
-    std::tie(na, nb) = limit_stretch_velocity(l, va, vb, 0, m_[a], m_[b]);
+    std::tie(na, nb) = limit_stretch_velocity(l, va, vb, 0, m_[a], m_[b], target);
   }
   // an attached end keeps its velocity and the free end follows it
-  if (inv_m_[a] == 0) na = nb = va;
-  if (inv_m_[b] == 0) na = nb = vb;
+  if (inv_m_[a] == 0) na = va, nb = va + target;
+  if (inv_m_[b] == 0) nb = vb, na = vb - target;
   v_.col(a) += (na - va) * u;
   v_.col(b) += (nb - vb) * u;
 }

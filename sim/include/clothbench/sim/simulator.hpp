@@ -88,17 +88,20 @@ struct SimTimings {
 /// heading into the body (v_n . n < 0); a point already leaving keeps its normal component.
 Vec3 collision_response(const Vec3& v, const Contact& contact, Real friction, Real reflection);
 
-/// Stretching velocity components (va, vb along the unit vector p2 - p1) of an over-elongated
+/// Stretching velocity components (va, vb along the unit vector p2 - p1) [m/s] of an over-elongated
 /// spring after a velocity limit: kVelocityZero zeroes both (dressing 4.3), kVelocity averages them
 /// (walking Eq. 5), kDirectional averages when |cos_alpha| < 0.3 and otherwise gives the rear point
-/// the front one's component (walking Eq. 6 rules; cos_alpha > 0: the rear point is p1).
-/// Averages are weighted by the end masses wa, wb (equal in the papers). Other limits return
+/// the front one's component (walking Eq. 6 rules; cos_alpha > 0: the rear point is p1), unless that
+/// would add kinetic energy to the pair, where it averages (our guard: the literal rule diverges).
+/// Averages are weighted by the end masses wa, wb (equal in the papers). `target` is the relative
+/// velocity vb - va the spring keeps [m/s] (0: no further elongation; the Simulator passes the one that
+/// ends the step at exactly the threshold length; kVelocityZero ignores it). Other limits return
 /// (va, vb) unchanged. The Simulator adds one rule of ours to kDirectional: a rear point that is
 /// held (attached, in contact with the body, or already following a held point this iteration)
 /// cannot catch up, so the front follows it instead; taken literally the rule diverges on a
 /// hanging cloth (measured in tests/sim).
 std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1,
-                                             Real wb = 1);
+                                             Real wb = 1, Real target = 0);
 
 /// One cloth, one collider (not owned), explicit Euler.
 class Simulator {
