@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -159,7 +160,8 @@ TEST(Simulator, InvalidParametersNameTheParameter) {
 }
 
 // max structural strain of a soft square hanging in a vertical plane from its two top corners
-// (a global stretch: the whole weight hangs from two points) after `seconds`; nullopt if diverged
+// (a global stretch: the whole weight hangs from two points), the largest over the second half of
+// `seconds` (after the first swing), sampled every 10 iterations; nullopt if diverged
 std::optional<Real> hanging_strain(Limit limit, int passes, Real seconds = 2.0f) {
   const int n = 21;
   const Real size = 0.6f;
@@ -177,10 +179,11 @@ std::optional<Real> hanging_strain(Limit limit, int passes, Real seconds = 2.0f)
   Simulator sim(c, m, p);
   pin(sim);
   const int steps = static_cast<int>(seconds / sim.dt());
-  for (int i = 0; i < steps && sim.step(); ++i) {
-  }
+  Real strain = 0;
+  for (int i = 0; i < steps && sim.step(); ++i)
+    if (2 * i >= steps && i % 10 == 0) strain = std::max(strain, sim.strain().max);  // sampled: strain() sorts
   if (sim.divergence()) return std::nullopt;
-  return sim.strain().max;
+  return strain;
 }
 
 std::string show(const std::optional<Real>& s) { return s ? std::to_string(*s) : std::string("diverged"); }
@@ -189,19 +192,63 @@ TEST(Simulator, VelocityLimitsHoldStrainWhereNoneStretches) {
   const auto none = hanging_strain(Limit::kNone, 1);
   const auto velocity = hanging_strain(Limit::kVelocity, 100);
   const auto zero = hanging_strain(Limit::kVelocityZero, 100);
+  const auto directional = hanging_strain(Limit::kDirectional, 100);
   // the papers' single pass per iteration, reported (see the issue note: it leaks under a sustained load)
   const auto velocity1 = hanging_strain(Limit::kVelocity, 1);
+  const auto zero1 = hanging_strain(Limit::kVelocityZero, 1);
   const auto directional1 = hanging_strain(Limit::kDirectional, 1);
-  const auto directional = hanging_strain(Limit::kDirectional, 100);
   std::printf("[ strain  ] threshold 0.10: none %s | 100 passes: velocity %s velocity-zero %s directional %s | "
-              "1 pass: velocity %s directional %s\n", show(none).c_str(), show(velocity).c_str(), show(zero).c_str(),
-              show(directional).c_str(), show(velocity1).c_str(), show(directional1).c_str());
-  ASSERT_TRUE(none && velocity && zero && directional);
+              "1 pass: velocity %s velocity-zero %s directional %s\n", show(none).c_str(), show(velocity).c_str(),
+              show(zero).c_str(), show(directional).c_str(), show(velocity1).c_str(), show(zero1).c_str(),
+              show(directional1).c_str());
+  ASSERT_TRUE(none && velocity && zero && directional && directional1);
   EXPECT_GT(*none, 0.5f);  // far beyond the 10 % threshold
+  // issue 2: within threshold + 1 %
   EXPECT_LE(*velocity, 0.11f);
   EXPECT_LE(*zero, 0.11f);
-  // the issue asks threshold + 1 %; directional measures about threshold + 1.5 % (see the issue note)
-  EXPECT_LE(*directional, 0.12f);
+  EXPECT_LE(*directional, 0.11f);
+}
+
+// a 15 x 15 tablecloth, 1 m a side, dropped 5 cm above a sphere (r 0.25 m) that after 1 s moves along +x at
+// 1 m/s for 1 s (walking Fig. 8, small); max structural strain at the end, nullopt if diverged
+std::optional<Real> moving_sphere_strain(Limit limit) {
+  ClothMesh cloth = make_grid_cloth(15, 15, 1.0f / 14, Vec3(-0.5f, 0.8f, -0.5f), Vec3::UnitX(), Vec3::UnitZ());
+  SolverParams p;
+  p.limit = limit;
+  p.threshold = 0.05f;
+  Material m = soft_material();
+  m.k_structural = 5;
+  m.k_shear = 2;
+  m.k_flexion = 1;
+  m.damping = 0.002f;
+  Simulator sim(cloth, m, p);
+  SphereCollider sphere(Vec3(0, 0.5f, 0), 0.25f);
+  sim.set_collider(&sphere);
+  const int drape = static_cast<int>(1.0f / sim.dt());
+  for (int i = 0; i < drape && sim.step(); ++i) {
+  }
+  // 60 frames per second, the sphere moved once per frame as the scene runner does
+  const Real frame_dt = 1.0f / 60;
+  const int per_frame = static_cast<int>(std::ceil(frame_dt / sim.dt()));
+  for (int f = 1; f <= 60 && !sim.divergence(); ++f) {
+    sphere.set_sphere(Vec3(Real(f) * frame_dt, 0.5f, 0), Vec3::UnitX());
+    for (int i = 0; i < per_frame && sim.step(); ++i) {
+    }
+  }
+  if (sim.divergence()) return std::nullopt;
+  return sim.strain().max;
+}
+
+TEST(Simulator, DirectionalLimitHoldsOnAMovingSphere) {
+  // the literal rear-takes-front rule diverged here during the drape; the energy guard keeps it stable
+  const auto none = moving_sphere_strain(Limit::kNone);
+  const auto velocity = moving_sphere_strain(Limit::kVelocity);
+  const auto directional = moving_sphere_strain(Limit::kDirectional);
+  std::printf("[ strain  ] moving sphere, threshold 0.05: none %s velocity %s directional %s\n", show(none).c_str(),
+              show(velocity).c_str(), show(directional).c_str());
+  ASSERT_TRUE(none && directional);
+  EXPECT_LT(*directional, *none);
+  EXPECT_LT(*directional, 0.10f);  // within twice the threshold (one pass per iteration)
 }
 
 TEST(Simulator, PositionVersusVelocityOnGlobalStretch) {
@@ -243,9 +290,10 @@ TEST(CollisionResponse, HandComputedEq15) {
 
 TEST(LimitStretchVelocity, DirectionalRulePicksRearPointBySignOfCos) {
   // cos > 0: p1 is the rear point and takes p2's component
-  auto [a1, b1] = limit_stretch_velocity(Limit::kDirectional, -1, 3, 0.9f);
-  EXPECT_FLOAT_EQ(a1, 3);
-  EXPECT_FLOAT_EQ(b1, 3);
+  auto [a1, b1] = limit_stretch_velocity(Limit::kDirectional, -3, 1, 0.9f);
+  EXPECT_FLOAT_EQ(a1, 1);
+  EXPECT_FLOAT_EQ(b1, 1);
+  // cos < 0: p2 is the rear point
   auto [a2, b2] = limit_stretch_velocity(Limit::kDirectional, -1, 3, -0.9f);
   EXPECT_FLOAT_EQ(a2, -1);
   EXPECT_FLOAT_EQ(b2, -1);
@@ -255,6 +303,21 @@ TEST(LimitStretchVelocity, DirectionalRulePicksRearPointBySignOfCos) {
   auto [a4, b4] = limit_stretch_velocity(Limit::kVelocityZero, -1, 3, 0);
   EXPECT_FLOAT_EQ(a4, 0);
   EXPECT_FLOAT_EQ(b4, 0);
+}
+
+TEST(LimitStretchVelocity, CatchingUpNeverAddsKineticEnergy) {
+  // p1 catching up with p2 (3) would raise 1 + 9 to 9 + 9: Eq. 5 instead
+  auto [a1, b1] = limit_stretch_velocity(Limit::kDirectional, -1, 3, 0.9f);
+  EXPECT_FLOAT_EQ(a1, 1);
+  EXPECT_FLOAT_EQ(b1, 1);
+  // a target relative velocity is kept by both rules: the rear point ends `target` behind the front
+  auto [a2, b2] = limit_stretch_velocity(Limit::kDirectional, -3, 1, 0.9f, 1, 1, -0.5f);
+  EXPECT_FLOAT_EQ(a2, 1.5f);
+  EXPECT_FLOAT_EQ(b2, 1);
+  // mass-weighted Eq. 5 keeps momentum with the target: 2 (-1) + 1 (3) = 1 = 2 a + b, b - a = 0.3
+  auto [a3, b3] = limit_stretch_velocity(Limit::kVelocity, -1, 3, 0, 2, 1, 0.3f);
+  EXPECT_NEAR(2 * a3 + b3, 1, 1e-6);
+  EXPECT_NEAR(b3 - a3, 0.3f, 1e-6);
 }
 
 TEST(Simulator, ClothDroppedOnSphereRestsOutsideIt) {
