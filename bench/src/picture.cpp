@@ -59,11 +59,14 @@ Camera make_camera(const Box3& box, int height, View view) {
 Vec3 light_direction(const Camera& c) { return (0.3f * c.right + 0.5f * c.up + 1.0f * c.toward).normalized(); }
 
 Rgb panel_colour(int panel) {
-  static const std::array<Rgb, 6> colours{{{200, 60, 60}, {60, 110, 200}, {220, 160, 40}, {70, 160, 90}, {150, 80, 180}, {40, 170, 170}}};
+  static const std::array<Rgb, 6> colours{
+      {{200, 60, 60}, {60, 110, 200}, {220, 160, 40}, {70, 160, 90}, {150, 80, 180}, {40, 170, 170}}};
   return colours[std::size_t(std::max(panel, 0)) % colours.size()];
 }
 
-int vertex_panel(const ClothMesh& cloth, Eigen::Index v) { return cloth.panel.empty() ? 0 : cloth.panel[std::size_t(v)]; }
+int vertex_panel(const ClothMesh& cloth, Eigen::Index v) {
+  return cloth.panel.empty() ? 0 : cloth.panel[std::size_t(v)];
+}
 
 // the cloth's quads as triangles (0 1 2, 0 2 3)
 Tris quad_triangles(const Quads& quads) {
@@ -78,7 +81,9 @@ Tris quad_triangles(const Quads& quads) {
 class Raster {
  public:
   Raster(Image& image, const Camera& cam)
-      : img_(image), cam_(cam), z_(size_t(image.width()) * image.height(), -std::numeric_limits<Real>::infinity()),
+      : img_(image),
+        cam_(cam),
+        z_(size_t(image.width()) * image.height(), -std::numeric_limits<Real>::infinity()),
         light_(light_direction(cam)) {}
 
   // one flat-shaded triangle (both sides lit)
@@ -164,7 +169,8 @@ DrawMesh cloth_draw_mesh(const ClothMesh& cloth, Real pixels_per_metre) {
   m.triangles = quad_triangles(cloth.quads);
   m.normals = angle_weighted_normals(m.positions, m.triangles);
   m.colours.resize(3, m.positions.cols());
-  for (Eigen::Index v = 0; v < m.positions.cols(); ++v) m.colours.col(v) = unit_colour(panel_colour(vertex_panel(cloth, v)));
+  for (Eigen::Index v = 0; v < m.positions.cols(); ++v)
+    m.colours.col(v) = unit_colour(panel_colour(vertex_panel(cloth, v)));
   m.two_sided = true;
   Pairs lines(2, 4 * cloth.quads.cols());
   Real length = 0;
@@ -190,7 +196,8 @@ Image render_gl(const BodyFrame& body, const ClothMesh& cloth, const Camera& cam
   o.centre = camera.origin + camera.right * o.half_width - camera.up * o.half_height;
   Lighting lighting;
   lighting.light = light_direction(camera);
-  const RgbBuffer buffer = gl_renderer().render({body_draw_mesh(body), cloth_draw_mesh(cloth, camera.scale)}, o, lighting);
+  const RgbBuffer buffer =
+      gl_renderer().render({body_draw_mesh(body), cloth_draw_mesh(cloth, camera.scale)}, o, lighting);
   // into bench's Image, pixel by pixel (both are top row first)
   Image image(buffer.width, buffer.height);
   for (int y = 0; y < buffer.height; ++y)
@@ -261,7 +268,8 @@ void export_dressed(const std::string& path, const BodyFrame& body, const ClothM
     ExportMesh m;
     m.name = p < static_cast<int>(cloth.panel_names.size()) ? cloth.panel_names[std::size_t(p)] : "cloth";
     m.positions.resize(3, static_cast<Eigen::Index>(used.size()));
-    for (std::size_t i = 0; i < used.size(); ++i) m.positions.col(static_cast<Eigen::Index>(i)) = cloth.positions.col(used[i]);
+    for (std::size_t i = 0; i < used.size(); ++i)
+      m.positions.col(static_cast<Eigen::Index>(i)) = cloth.positions.col(used[i]);
     m.triangles = Eigen::Map<const Tris>(tris.data(), 3, static_cast<Eigen::Index>(tris.size() / 3));
     const Rgb c = panel_colour(p);
     m.colour = {c.r / 255.f, c.g / 255.f, c.b / 255.f};

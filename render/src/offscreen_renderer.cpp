@@ -82,7 +82,9 @@ void check_mesh(const DrawMesh& m, std::size_t index) {
   const std::string what = "render: mesh " + std::to_string(index) + ": ";
   if (m.normals.cols() != nv || m.colours.cols() != nv)
     throw std::invalid_argument(what + "normals and colours need one column per vertex (" + std::to_string(nv) + ")");
-  const auto in_range = [nv](const auto& idx) { return idx.size() == 0 || (idx.minCoeff() >= 0 && idx.maxCoeff() < nv); };
+  const auto in_range = [nv](const auto& idx) {
+    return idx.size() == 0 || (idx.minCoeff() >= 0 && idx.maxCoeff() < nv);
+  };
   if (!in_range(m.triangles) || !in_range(m.lines)) throw std::invalid_argument(what + "vertex index out of range");
 }
 
@@ -121,9 +123,9 @@ struct OffscreenRenderer::Impl {
   OSMesaContext ctx = nullptr;
   std::vector<unsigned char> client = std::vector<unsigned char>(4 * kClientSide * kClientSide);
   GLuint program = 0, vao = 0;
-  std::array<GLuint, 4> vbo{};        // positions, normals, colours, indices
-  std::array<GLuint, 2> fbo{};        // multisampled draw target, resolved target
-  std::array<GLuint, 3> rbo{};        // multisampled colour, multisampled depth, resolved colour
+  std::array<GLuint, 4> vbo{};  // positions, normals, colours, indices
+  std::array<GLuint, 2> fbo{};  // multisampled draw target, resolved target
+  std::array<GLuint, 3> rbo{};  // multisampled colour, multisampled depth, resolved colour
   GLint samples = 0;
   int width = 0, height = 0;
   std::string renderer_name;

@@ -2,9 +2,8 @@
 // the CPU rasteriser, and the glTF export of every cloth vertex.
 #include "picture.hpp"
 
-#include <gtest/gtest.h>
-
 #include <assimp/scene.h>
+#include <gtest/gtest.h>
 
 #include <assimp/Importer.hpp>
 #include <cmath>
@@ -91,7 +90,8 @@ TEST(Picture, SphereCoversItsDiscAndIsLitFromTheUpperRight) {
     const double expected = M_PI * std::pow(kRadius * scale, 2) / (double(im.width()) * im.height());
     const double fraction = count(im, covered) / (double(im.width()) * im.height());
     EXPECT_NEAR(fraction / expected, 1.0, 0.02) << picture_renderer_name(r) << ": " << fraction << " vs " << expected;
-    EXPECT_GT(quadrant_brightness(im, true, true), quadrant_brightness(im, false, false) + 20) << picture_renderer_name(r);
+    EXPECT_GT(quadrant_brightness(im, true, true), quadrant_brightness(im, false, false) + 20)
+        << picture_renderer_name(r);
   }
 }
 

@@ -1,9 +1,8 @@
 // glTF export through assimp's glb2 exporter: every vertex of every mesh survives a round trip.
 #include "clothbench/io/gltf_export.hpp"
 
-#include <gtest/gtest.h>
-
 #include <assimp/scene.h>
+#include <gtest/gtest.h>
 
 #include <assimp/Importer.hpp>
 #include <filesystem>
@@ -30,7 +29,8 @@ std::map<std::string, unsigned> reimported_vertices(const std::string& path) {
   while (!nodes.empty()) {
     const aiNode* node = nodes.back();
     nodes.pop_back();
-    for (unsigned i = 0; i < node->mNumMeshes; ++i) out[node->mName.C_Str()] += scene->mMeshes[node->mMeshes[i]]->mNumVertices;
+    for (unsigned i = 0; i < node->mNumMeshes; ++i)
+      out[node->mName.C_Str()] += scene->mMeshes[node->mMeshes[i]]->mNumVertices;
     nodes.insert(nodes.end(), node->mChildren, node->mChildren + node->mNumChildren);
   }
   return out;

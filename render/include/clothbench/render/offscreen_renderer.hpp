@@ -23,11 +23,11 @@ struct RgbBuffer {
 /// colours are per-vertex RGB in [0, 1] (3 x nv). `lines` (2 x ne, optional) are edges drawn on
 /// top in the vertex colour scaled by `line_shade`.
 struct DrawMesh {
-  Points3 positions;   ///< vertex positions [m] (3 x nv)
-  Points3 normals;     ///< unit vertex normals (3 x nv)
-  Points3 colours;     ///< vertex colours in [0, 1] (3 x nv)
-  Tris triangles;      ///< vertex indices (3 x nt)
-  Pairs lines;         ///< optional wire edges (2 x ne)
+  Points3 positions;        ///< vertex positions [m] (3 x nv)
+  Points3 normals;          ///< unit vertex normals (3 x nv)
+  Points3 colours;          ///< vertex colours in [0, 1] (3 x nv)
+  Tris triangles;           ///< vertex indices (3 x nt)
+  Pairs lines;              ///< optional wire edges (2 x ne)
   bool two_sided = false;   ///< light the side facing the camera (cloth); else back faces stay dark
   float line_shade = 0.7f;  ///< line colour = vertex colour x line_shade
 };
