@@ -197,10 +197,11 @@ TEST(Simulator, VelocityLimitsHoldStrainWhereNoneStretches) {
   const auto velocity1 = hanging_strain(Limit::kVelocity, 1);
   const auto zero1 = hanging_strain(Limit::kVelocityZero, 1);
   const auto directional1 = hanging_strain(Limit::kDirectional, 1);
-  std::printf("[ strain  ] threshold 0.10: none %s | 100 passes: velocity %s velocity-zero %s directional %s | "
-              "1 pass: velocity %s velocity-zero %s directional %s\n", show(none).c_str(), show(velocity).c_str(),
-              show(zero).c_str(), show(directional).c_str(), show(velocity1).c_str(), show(zero1).c_str(),
-              show(directional1).c_str());
+  std::printf(
+      "[ strain  ] threshold 0.10: none %s | 100 passes: velocity %s velocity-zero %s directional %s | "
+      "1 pass: velocity %s velocity-zero %s directional %s\n",
+      show(none).c_str(), show(velocity).c_str(), show(zero).c_str(), show(directional).c_str(),
+      show(velocity1).c_str(), show(zero1).c_str(), show(directional1).c_str());
   ASSERT_TRUE(none && velocity && zero && directional && directional1);
   EXPECT_GT(*none, 0.5f);  // far beyond the 10 % threshold
   // issue 2: within threshold + 1 %
