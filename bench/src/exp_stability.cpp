@@ -16,6 +16,10 @@ namespace {
 
 constexpr double kInsideLimitPct = 5;   // a run fails when more of the cloth ends inside the body
 constexpr double kCrossingsLimitPct = 1;  // or more of its structural springs cross the body surface
+// a collider tunnels when more springs cross the moving sphere than with the analytic one by over
+// this many points; set above the spread of the exact mesh colliders (fcl, embree: up to 1.1 points
+// when it was chosen), which differ from the analytic sphere only by its tessellation
+constexpr double kCrossingsExcessPct = 2;
 constexpr double kMissLimitPct = 1;     // a map fails a body part when it misses more contacts
 const char* const kTablecloth = "walking/tablecloth_sphere.toml";
 
@@ -65,7 +69,7 @@ std::string dt_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
 // response only changes velocities, so some cloth sinks even with the exact analytic sphere; a
 // collider fails at a speed when, at some frame, more of the cloth is inside the sphere than with
 // the analytic one by over kInsideLimitPct points, or more of its structural springs cross the sphere
-// than with the analytic one by over kCrossingsLimitPct points (or the run diverges).
+// than with the analytic one by over kCrossingsExcessPct points (or the run diverges).
 std::string speed_boundaries(ExperimentContext& ctx) {
   const std::vector<double> speeds = ctx.quick() ? std::vector<double>{0.5, 8} : std::vector<double>{0.5, 1, 2, 4, 8};
   MarkdownTable t({"collider", "largest speed without failure [m/s]", "first failure",
@@ -86,9 +90,10 @@ std::string speed_boundaries(ExperimentContext& ctx) {
       if (c == "sphere") reference.push_back(r.animate_inside_max_pct);
       if (c == "sphere") reference_crossings.push_back(r.animate_crossings_max_pct);
       const bool sinks = r.animate_inside_max_pct > reference[i] + kInsideLimitPct;
-      const bool tunnels = r.animate_crossings_max_pct > reference_crossings[i] + kCrossingsLimitPct;
+      const bool tunnels = r.animate_crossings_max_pct > reference_crossings[i] + kCrossingsExcessPct;
       insides += (insides.empty() ? "" : ", ") + (r.divergence ? std::string("div") : num(r.animate_inside_max_pct, 1));
-      crossings += (crossings.empty() ? "" : ", ") + (r.divergence ? std::string("div") : num(r.animate_crossings_max_pct, 1));
+      crossings +=
+          (crossings.empty() ? "" : ", ") + (r.divergence ? std::string("div") : num(r.animate_crossings_max_pct, 1));
       if (!(r.divergence || sinks || tunnels) && failure == "none up to 8 m/s") ok_speed = speeds[i];
       if ((r.divergence || sinks || tunnels) && failure == "none up to 8 m/s")
         failure = num(speeds[i], 1) + " m/s: " +
@@ -101,7 +106,7 @@ std::string speed_boundaries(ExperimentContext& ctx) {
   return "\n### Sphere speed (tablecloth, 400 vertices, velocity limit, speeds 0.5, 1, 2, 4, 8 m/s for 0.4 s; the oracle "
          "measures every frame; failure: more of the cloth inside than with the analytic sphere by over " +
          num(kInsideLimitPct, 0) + " points, or more structural springs crossing the sphere than with it by over " +
-         num(kCrossingsLimitPct, 0) + " points, at some frame; or diverged)\n\n" + t.str();
+         num(kCrossingsExcessPct, 0) + " points, at some frame; or diverged)\n\n" + t.str();
 }
 
 // the share of exact contacts a collider misses, per body region: body vertices moved 2 mm out

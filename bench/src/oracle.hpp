@@ -5,8 +5,9 @@
 /// has CLOTHBENCH_WITH_EMBREE; otherwise (documented fallback) every triangle per point
 /// (closest_point_brute), exact but O(points x triangles).
 /// Crossings: cloth segments (structural springs) that pass through a body triangle, the "holes"
-/// of dressing section 7 that vertex and midpoint queries cannot see; one Embree occlusion ray per
-/// segment, or every triangle per segment without Embree.
+/// of dressing section 7, which a body part poking between cloth vertices makes without putting
+/// any vertex inside; one Embree occlusion ray per segment, or every triangle per segment without
+/// Embree. Penetrating faces: cloth quads whose midpoint is inside.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -18,30 +19,32 @@
 
 namespace clothbench {
 
-/// Penetration of a point set into the body. Penetration = max(0, -signed distance).
+/// Accuracy against the body: penetration of a point set (penetration = max(0, -signed distance)),
+/// crossings of cloth segments and penetrating faces, and what measuring them cost.
 struct Accuracy {
-  double inside_pct = 0;     ///< share of points inside the body [%]
-  double depth_max_mm = 0;   ///< deepest penetration, positive [mm]; 0 if none inside
-  double depth_mean_mm = 0;  ///< mean penetration over the inside points [mm]; 0 if none
-  double depth_p95_mm = 0;   ///< 95th percentile of penetration over all points [mm]; 0 when < 5 % inside
-  std::size_t points = 0;    ///< finite points measured (non-finite points are skipped)
-  std::size_t inside = 0;    ///< points inside (signed distance < 0)
-  std::size_t segments = 0;  ///< finite segments tested for crossings (structural springs)
-  std::size_t crossings = 0; ///< segments that meet a body triangle; a segment wholly inside meets none
-  double crossings_pct = 0;  ///< crossings / segments [%]; 0 when none were tested
+  double inside_pct = 0;         ///< share of points inside the body [%]
+  double depth_max_mm = 0;       ///< deepest penetration, positive [mm]; 0 if none inside
+  double depth_mean_mm = 0;      ///< mean penetration over the inside points [mm]; 0 if none
+  double depth_p95_mm = 0;       ///< 95th percentile of penetration over all points [mm]; 0 when < 5 % inside
+  std::size_t points = 0;        ///< finite points measured (non-finite points are skipped)
+  std::size_t inside = 0;        ///< points inside (signed distance < 0)
+  std::size_t segments = 0;      ///< finite segments tested for crossings (structural springs)
+  std::size_t crossings = 0;     ///< segments that meet a body triangle; a segment wholly inside meets none
+  double crossings_pct = 0;      ///< crossings / segments [%]; 0 when none were tested
   std::size_t faces = 0;         ///< finite cloth quads tested by measure_faces
   std::size_t faces_inside = 0;  ///< quads whose midpoint (mean of the 4 corners) is inside the body
   double faces_inside_pct = 0;   ///< faces_inside / faces [%]; 0 when none were tested
-  double depth_ms = 0;       ///< cost of the signed-distance query of measure() [ms]
-  double crossings_ms = 0;   ///< cost of the segment query of measure_crossings() [ms]
+  double depth_ms = 0;           ///< cost of the signed-distance query of measure() [ms]
+  double crossings_ms = 0;       ///< cost of the segment query of measure_crossings() [ms]
 };
 
 /// The structural springs of a cloth (2 x ns_structural vertex indices): the segments whose
 /// crossings the oracle counts (shear and flexion springs span more than one grid cell).
 Pairs structural_springs(const ClothMesh& mesh);
 
-/// Exact test of the closed segment a -> b against triangle (t0, t1, t2), either face, in double
-/// precision (Moller-Trumbore); false for a zero-length segment or a degenerate triangle.
+/// Whether the closed segment a -> b [m] meets the closed triangle (t0, t1, t2), either face, in
+/// double precision (Moller-Trumbore); false for a zero-length segment, a segment in the triangle's
+/// plane or a degenerate triangle.
 bool segment_crosses_triangle(const Vec3& a, const Vec3& b, const Vec3& t0, const Vec3& t1, const Vec3& t2);
 
 /// Exact signed distance to one body frame. Movable, not copyable.
