@@ -1,5 +1,10 @@
 // Super-elasticity limits (dressing section 4, walking section 3): velocity, directional and
 // position (Provot) corrections of over-stretched springs.
+// Our reading of the velocity limits: a spring whose next length (Eq. 3) would pass (1 + threshold) l0
+// keeps the relative velocity along it that ends the step at exactly that length. Directional: springs
+// perpendicular to v_dir average (Eq. 5); on the others the rear point catches up with the front one,
+// except that a held rear point (attached, in contact, or already following one) makes the front follow
+// it, and catching up that would add kinetic energy to the pair averages instead.
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
