@@ -52,6 +52,18 @@ std::vector<PanelInfo> panel_infos(const Pattern& pat, const MeshedPattern& m) {
   return out;
 }
 
+// per seam: the largest distance along the seam between the pattern positions of two partners [cm]
+std::vector<double> seam_offsets(const MeshedPattern& m) {
+  std::vector<double> out;
+  std::size_t pair = 0;
+  for (int n : m.seam_pair_count) {
+    double worst = 0;
+    for (int k = 0; k < n; ++k, ++pair) worst = std::max(worst, m.seam_offset_cm[pair]);
+    out.push_back(worst);
+  }
+  return out;
+}
+
 nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m,
                        const std::vector<PanelInfo>& infos) {
   nlohmann::json panels = nlohmann::json::array();
@@ -74,6 +86,7 @@ nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const Meshed
             {"flexion", m.mesh.count(SpringKind::kFlexion)}}},
           {"seams", static_cast<int>(pat.seams.size())},
           {"seam_pairs", static_cast<int>(m.mesh.seam_pairs.cols())},
+          {"seam_offset_max_cm", seam_offsets(m)},
           {"quads", static_cast<int>(m.mesh.quads.cols())},
           {"attached", static_cast<int>(m.mesh.attached.size())}};
 }
@@ -91,12 +104,13 @@ void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern
               m.mesh.count(SpringKind::kShear), m.mesh.count(SpringKind::kFlexion));
   std::printf("  quads          %d\n", static_cast<int>(m.mesh.quads.cols()));
   std::printf("  seams          %zu, %d seam pairs\n", pat.seams.size(), static_cast<int>(m.mesh.seam_pairs.cols()));
+  const auto offsets = seam_offsets(m);
   for (std::size_t s = 0; s < pat.seams.size(); ++s) {
     const Seam& seam = pat.seams[s];
-    std::printf("    %s edge %d <-> %s edge %d  %s, %d pairs\n",
+    std::printf("    %s edge %d <-> %s edge %d  %s, %d pairs, partners up to %.2f cm apart along the seam\n",
                 pat.panels[static_cast<std::size_t>(seam.panel_a)].name.c_str(), seam.edge_a,
                 pat.panels[static_cast<std::size_t>(seam.panel_b)].name.c_str(), seam.edge_b,
-                seam.reversed ? "reversed" : "aligned", m.seam_pair_count[s]);
+                seam.reversed ? "reversed" : "aligned", m.seam_pair_count[s], offsets[s]);
   }
   std::printf("  attached       %zu vertices\n", m.mesh.attached.size());
 }

@@ -51,7 +51,6 @@ bool segments_cross(const Vec2d& a, const Vec2d& b, const Vec2d& c, const Vec2d&
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
 }
 
-
 // Adds a boundary vertex at `q` to every edge it lies on (corners belong to two), keyed by its
 // arc position along the edge as a fraction of the edge length.
 void add_to_edges(const Panel& p, const Vec2d& q, int v, std::vector<std::vector<std::pair<double, int>>>& ev) {
@@ -71,35 +70,32 @@ void add_to_edges(const Panel& p, const Vec2d& q, int v, std::vector<std::vector
   }
 }
 
-// One meshed panel: vertices (uv), which are on the outline, and per edge the boundary vertices
-// ordered by their arc-length position along the edge.
+// One meshed panel: vertices (uv), which are on the outline, per edge the boundary vertices
+// ordered by their arc-length position along the edge, and the grid's springs and quads.
 struct PanelGrid {
   std::vector<Vec2d> uv;
   std::vector<std::uint8_t> boundary;
   std::vector<std::vector<std::pair<double, int>>> edge_vertices;  // (arc position, local vertex)
-  ClothMesh mesh;
+  std::vector<std::array<int, 2>> springs;
+  std::vector<SpringKind> kinds;
+  std::vector<std::array<int, 4>> quads;
 };
 
-PanelGrid grid_panel(const Panel& p, double h) {
-  PanelGrid g;
-  g.edge_vertices.resize(static_cast<std::size_t>(p.edge_count()));
+// Grid nodes inside the outline, and the ring around them snapped onto the outline.
+void place_grid_vertices(const Panel& p, double h, PanelGrid& g, std::vector<int>& id, int& nx, int& ny) {
   Vec2d lo = p.outline[0], hi = p.outline[0];
   for (const auto& q : p.outline) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
-  const int nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / h)) + 3;
-  const int ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / h)) + 3;
-  // the grid is centred on the outline's box, so mirrored panels get mirrored vertices and their
-  // seams pair vertex for vertex
+  nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / h)) + 3;
+  ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / h)) + 3;
+  // the grid is centred on the outline's box, so mirrored panels get mirrored vertices
   const Vec2d origin = 0.5 * (lo + hi) - 0.5 * h * Vec2d(nx - 1, ny - 1);
   auto node = [&](int i, int j) -> Vec2d { return origin + h * Vec2d(i, j); };
-  std::vector<int> in(static_cast<std::size_t>(nx * ny), 0);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) in[static_cast<std::size_t>(j * nx + i)] = inside(p.outline, node(i, j)) ? 1 : 0;
-  std::vector<int> id(static_cast<std::size_t>(nx * ny), -1);
+  id.assign(static_cast<std::size_t>(nx * ny), -1);
   // inside nodes farther than h/4 from the outline are kept as they are
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const Vec2d q = node(i, j);
-      if (in[static_cast<std::size_t>(j * nx + i)] && closest_on_outline(p.outline, q).dist > 0.25 * h) {
+      if (inside(p.outline, q) && closest_on_outline(p.outline, q).dist > 0.25 * h) {
         id[static_cast<std::size_t>(j * nx + i)] = static_cast<int>(g.uv.size());
         g.uv.push_back(q);
         g.boundary.push_back(0);
@@ -126,19 +122,23 @@ PanelGrid grid_panel(const Panel& p, double h) {
       add_to_edges(p, c.point, id[k], g.edge_vertices);
     }
   for (auto& ev : g.edge_vertices) std::sort(ev.begin(), ev.end());
-  // springs and quads between kept grid neighbours, rest lengths from the pattern
-  std::vector<std::array<int, 2>> ends;
-  std::vector<Real> rest;
-  auto at = [&](int i, int j) { return (i < 0 || j < 0 || i >= nx || j >= ny) ? -1 : id[static_cast<std::size_t>(j * nx + i)]; };
+}
+
+PanelGrid grid_panel(const Panel& p, double h) {
+  PanelGrid g;
+  g.edge_vertices.resize(static_cast<std::size_t>(p.edge_count()));
+  std::vector<int> id;
+  int nx = 0, ny = 0;
+  place_grid_vertices(p, h, g, id, nx, ny);
+  // springs and quads between kept grid neighbours
+  auto at = [&](int i, int j) {
+    return (i < 0 || j < 0 || i >= nx || j >= ny) ? -1 : id[static_cast<std::size_t>(j * nx + i)];
+  };
   auto add = [&](int a, int b, SpringKind kind) {
     if (a < 0 || b < 0) return;
-    const double l = (g.uv[static_cast<std::size_t>(a)] - g.uv[static_cast<std::size_t>(b)]).norm() / 100.0;
-    if (l < 1e-6) return;
-    ends.push_back({a, b});
-    rest.push_back(static_cast<Real>(l));
-    g.mesh.kind.push_back(kind);
+    g.springs.push_back({a, b});
+    g.kinds.push_back(kind);
   };
-  std::vector<std::array<int, 4>> quads;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int a = at(i, j);
@@ -150,38 +150,163 @@ PanelGrid grid_panel(const Panel& p, double h) {
       add(a, at(i + 2, j), SpringKind::kFlexion);
       add(a, at(i, j + 2), SpringKind::kFlexion);
       if (at(i + 1, j) >= 0 && at(i + 1, j + 1) >= 0 && at(i, j + 1) >= 0)
-        quads.push_back({a, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+        g.quads.push_back({a, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
     }
+  return g;
+}
+
+// The panel's cloth from its final uv: positions (u, v, 0) [m], rest lengths from the pattern,
+// a quarter of each adjacent cell's area per vertex.
+ClothMesh panel_mesh(const Panel& p, const PanelGrid& g, double h) {
+  ClothMesh m;
   const auto nv = static_cast<Eigen::Index>(g.uv.size());
-  ClothMesh& m = g.mesh;
   m.positions.resize(3, nv);
-  m.vertex_area = Scalars::Zero(nv);
   for (Eigen::Index v = 0; v < nv; ++v)
     m.positions.col(v) = Vec3(static_cast<Real>(g.uv[static_cast<std::size_t>(v)].x() / 100),
                               static_cast<Real>(g.uv[static_cast<std::size_t>(v)].y() / 100), 0);
-  m.springs.resize(2, static_cast<Eigen::Index>(ends.size()));
-  m.rest_length.resize(static_cast<Eigen::Index>(ends.size()));
-  for (std::size_t s = 0; s < ends.size(); ++s) {
-    m.springs.col(static_cast<Eigen::Index>(s)) << ends[s][0], ends[s][1];
-    m.rest_length[static_cast<Eigen::Index>(s)] = rest[s];
+  std::vector<Eigen::Index> kept;
+  for (std::size_t s = 0; s < g.springs.size(); ++s)
+    if ((g.uv[static_cast<std::size_t>(g.springs[s][0])] - g.uv[static_cast<std::size_t>(g.springs[s][1])]).norm() >=
+        1e-4)
+      kept.push_back(static_cast<Eigen::Index>(s));
+  m.springs.resize(2, static_cast<Eigen::Index>(kept.size()));
+  m.rest_length.resize(static_cast<Eigen::Index>(kept.size()));
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    const auto& e = g.springs[static_cast<std::size_t>(kept[k])];
+    m.springs.col(static_cast<Eigen::Index>(k)) << e[0], e[1];
+    m.rest_length[static_cast<Eigen::Index>(k)] =
+        static_cast<Real>((g.uv[static_cast<std::size_t>(e[0])] - g.uv[static_cast<std::size_t>(e[1])]).norm() / 100.0);
+    m.kind.push_back(g.kinds[static_cast<std::size_t>(kept[k])]);
   }
-  m.quads.resize(4, static_cast<Eigen::Index>(quads.size()));
-  for (std::size_t q = 0; q < quads.size(); ++q) {
-    const auto& c = quads[q];
+  m.quads.resize(4, static_cast<Eigen::Index>(g.quads.size()));
+  m.vertex_area = Scalars::Zero(nv);
+  for (std::size_t q = 0; q < g.quads.size(); ++q) {
+    const auto& c = g.quads[q];
     m.quads.col(static_cast<Eigen::Index>(q)) << c[0], c[1], c[2], c[3];
-    // a vertex carries a quarter of each adjacent cell's area (shoelace, m^2)
-    double area = 0;
-    for (int k = 0; k < 4; ++k)
-      area += cross(g.uv[static_cast<std::size_t>(c[static_cast<std::size_t>(k)])],
-                    g.uv[static_cast<std::size_t>(c[static_cast<std::size_t>((k + 1) % 4)])]);
-    for (int k = 0; k < 4; ++k) m.vertex_area[c[static_cast<std::size_t>(k)]] += static_cast<Real>(std::abs(area) / 8e4);
+    double area = 0;  // shoelace [cm^2]
+    for (std::size_t k = 0; k < 4; ++k)
+      area += cross(g.uv[static_cast<std::size_t>(c[k])], g.uv[static_cast<std::size_t>(c[(k + 1) % 4])]);
+    for (std::size_t k = 0; k < 4; ++k) m.vertex_area[c[k]] += static_cast<Real>(std::abs(area) / 8e4);
   }
   const Real floor_area = static_cast<Real>(0.05 * h * h / 1e4);  // vertices touching no full cell
   for (Eigen::Index v = 0; v < nv; ++v) m.vertex_area[v] = std::max(m.vertex_area[v], floor_area);
   m.panel.assign(static_cast<std::size_t>(nv), 0);
   m.panel_names = {p.name};
   m.seam_pairs.resize(2, 0);
-  return g;
+  return m;
+}
+
+// Outline indices [s0, s1) of the segments of edge e.
+std::pair<int, int> edge_segments(const Panel& p, int e) {
+  const int n = static_cast<int>(p.outline.size());
+  return {p.edge_begin[static_cast<std::size_t>(e)],
+          e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n};
+}
+
+Vec2d outline_point(const Panel& p, int s) { return p.outline[static_cast<std::size_t>(s) % p.outline.size()]; }
+
+double edge_length(const Panel& p, int e) {
+  const auto [s0, s1] = edge_segments(p, e);
+  double len = 0;
+  for (int s = s0; s < s1; ++s) len += (outline_point(p, s + 1) - outline_point(p, s)).norm();
+  return len;
+}
+
+// The point at arc fraction t (0..1) of edge e of panel p.
+Vec2d point_on_edge(const Panel& p, int e, double t) {
+  const auto [s0, s1] = edge_segments(p, e);
+  double left = t * edge_length(p, e);
+  for (int s = s0; s < s1; ++s) {
+    const Vec2d a = outline_point(p, s), b = outline_point(p, s + 1);
+    const double l = (b - a).norm();
+    if (left <= l || s + 1 == s1) return l > 0 ? Vec2d(a + std::min(left / l, 1.0) * (b - a)) : a;
+    left -= l;
+  }
+  return outline_point(p, s1);
+}
+
+// Edge runs whose vertices sit at arc fractions 0 or 1 are panel corners: they stay.
+bool is_corner(double t) { return t < 1e-9 || t > 1 - 1e-9; }
+
+// Moves the vertices of a run (sorted by arc fraction) to new fractions: corners stay, `anchors`
+// (run index -> fraction) are met exactly, and the others spread evenly by index between them;
+// a run's free ends lie half a spacing from the edge's ends.
+void respace_run(std::vector<std::pair<double, int>>& run, std::map<int, double> anchors) {
+  const int n = static_cast<int>(run.size());
+  if (n == 0) return;
+  std::vector<std::pair<double, double>> knots;  // (index, fraction), ascending in both
+  knots.push_back(is_corner(run.front().first) ? std::pair{0.0, run.front().first} : std::pair{-0.5, 0.0});
+  for (int i = 0; i < n; ++i)
+    if (is_corner(run[static_cast<std::size_t>(i)].first)) anchors.erase(i);
+  for (const auto& [i, t] : anchors)
+    if (t > knots.back().second && i > knots.back().first) knots.push_back({double(i), t});
+  const auto last = is_corner(run.back().first) ? std::pair{double(n - 1), run.back().first} : std::pair{n - 0.5, 1.0};
+  while (knots.size() > 1 && !(knots.back().first < last.first && knots.back().second < last.second)) knots.pop_back();
+  knots.push_back(last);
+  std::size_t k = 0;
+  for (int i = 0; i < n; ++i) {
+    if (is_corner(run[static_cast<std::size_t>(i)].first)) continue;
+    while (k + 2 < knots.size() && knots[k + 1].first < i) ++k;
+    const auto [i0, t0] = knots[k];
+    const auto [i1, t1] = knots[k + 1];
+    run[static_cast<std::size_t>(i)].first = t0 + (t1 - t0) * (i - i0) / (i1 - i0);
+  }
+}
+
+// Anchors of a free run on a fixed one: the smaller run is matched index by index to the larger
+// (monotone, nearest in arc fraction), and the free run's matched vertices take the fixed
+// partners' fractions (1 - t when the seam is reversed).
+std::map<int, double> seam_anchors(const std::vector<std::pair<double, int>>& fixed,
+                                   const std::vector<std::pair<double, int>>& free_run, bool reversed) {
+  std::vector<double> f;  // fixed fractions in the free run's direction, ascending
+  for (const auto& [t, v] : fixed) f.push_back(reversed ? 1 - t : t);
+  std::sort(f.begin(), f.end());
+  const bool free_smaller = free_run.size() <= f.size();
+  const std::size_t m = std::min(free_run.size(), f.size()), big = std::max(free_run.size(), f.size());
+  std::map<int, double> anchors;
+  std::size_t lo = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    const double t = free_smaller ? free_run[k].first : f[k];
+    std::size_t best = lo;
+    for (std::size_t j = lo; j + (m - k) <= big; ++j) {
+      const double tj = free_smaller ? f[j] : free_run[j].first;
+      const double tb = free_smaller ? f[best] : free_run[best].first;
+      if (std::abs(tj - t) < std::abs(tb - t)) best = j;
+    }
+    lo = best + 1;
+    if (free_smaller)
+      anchors[static_cast<int>(k)] = f[best];
+    else
+      anchors[static_cast<int>(best)] = f[k];
+  }
+  return anchors;
+}
+
+// Sewn edges get their boundary vertices at matching arc fractions, so every seam pair joins the
+// same pattern point on both sides (a mismatch would leave a gap the seam can never close). The
+// first seam to touch an edge spreads the shorter run evenly and moves the other onto it; an edge
+// already placed by an earlier seam stays fixed.
+void align_seam_vertices(const Pattern& pat, std::vector<PanelGrid>& grids) {
+  std::set<std::pair<int, int>> done;
+  for (const auto& s : pat.seams) {
+    auto& ra = grids[static_cast<std::size_t>(s.panel_a)].edge_vertices[static_cast<std::size_t>(s.edge_a)];
+    auto& rb = grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)];
+    const bool a_done = done.count({s.panel_a, s.edge_a}) > 0, b_done = done.count({s.panel_b, s.edge_b}) > 0;
+    if ((a_done && b_done) || &ra == &rb) continue;
+    const bool a_fixed = a_done || (!b_done && ra.size() <= rb.size());
+    auto& fixed = a_fixed ? ra : rb;
+    auto& free_run = a_fixed ? rb : ra;
+    if (!(a_fixed ? a_done : b_done)) respace_run(fixed, {});
+    respace_run(free_run, seam_anchors(fixed, free_run, s.reversed));
+    done.insert({s.panel_a, s.edge_a});
+    done.insert({s.panel_b, s.edge_b});
+  }
+  // move the vertices to their new fractions
+  for (std::size_t pi = 0; pi < grids.size(); ++pi)
+    for (const auto& [panel, edge] : done)
+      if (panel == static_cast<int>(pi))
+        for (const auto& [t, v] : grids[pi].edge_vertices[static_cast<std::size_t>(edge)])
+          grids[pi].uv[static_cast<std::size_t>(v)] = point_on_edge(pat.panels[pi], edge, t);
 }
 
 // Pairs two vertex runs by arc position (fraction of the edge length, so edges of different
@@ -203,9 +328,24 @@ std::vector<std::array<int, 2>> match_runs(const std::vector<std::pair<double, i
     for (std::size_t j = 1; j < sh.size(); ++j)
       if (std::abs(rel(sh, j) - t) < std::abs(rel(sh, best) - t)) best = j;
     out.push_back(a_drives ? std::array<int, 2>{lo[i].second, sh[best].second}
-                         : std::array<int, 2>{sh[best].second, lo[i].second});
+                           : std::array<int, 2>{sh[best].second, lo[i].second});
   }
   return out;
+}
+
+// How far apart along the seam the partners of a pair sit in the pattern [cm]: the difference of
+// their arc fractions (one reversed) times the mean length of the two edges.
+double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::pair<double, int>>& ra,
+                      const std::vector<std::pair<double, int>>& rb, const std::array<int, 2>& pair) {
+  auto fraction = [](const std::vector<std::pair<double, int>>& r, int v) {
+    for (const auto& [t, u] : r)
+      if (u == v) return t;
+    return 0.0;
+  };
+  const double ta = fraction(ra, pair[0]), tb = fraction(rb, pair[1]);
+  const double la = edge_length(pat.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a);
+  const double lb = edge_length(pat.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b);
+  return std::abs(ta - (s.reversed ? 1 - tb : tb)) * 0.5 * (la + lb);
 }
 
 Eigen::Matrix3f placement_rotation(const Placement& pl) {
@@ -235,9 +375,12 @@ std::vector<Vec2d> flatten_bezier(const Vec2d& a, const std::vector<Vec2d>& c, c
   std::vector<Vec2d> out;
   for (int s = 1; s <= segments; ++s) {
     const double t = double(s) / segments, u = 1 - t;
-    if (c.size() == 1) out.push_back(u * u * a + 2 * u * t * c[0] + t * t * b);
-    else if (c.size() == 2) out.push_back(u * u * u * a + 3 * u * u * t * c[0] + 3 * u * t * t * c[1] + t * t * t * b);
-    else out.push_back(u * a + t * b);
+    if (c.size() == 1)
+      out.push_back(u * u * a + 2 * u * t * c[0] + t * t * b);
+    else if (c.size() == 2)
+      out.push_back(u * u * u * a + 3 * u * u * t * c[0] + 3 * u * t * t * c[1] + t * t * t * b);
+    else
+      out.push_back(u * a + t * b);
   }
   return out;
 }
@@ -252,7 +395,8 @@ void validate_pattern(const Pattern& pat) {
     if (n < 3) fail("panel '" + p.name + "' has fewer than 3 outline points");
     if (p.edge_begin.empty() || p.edge_begin[0] != 0) fail("panel '" + p.name + "': first edge must start at 0");
     for (std::size_t e = 1; e < p.edge_begin.size(); ++e)
-      if (p.edge_begin[e] <= p.edge_begin[e - 1] || p.edge_begin[e] >= n) fail("panel '" + p.name + "': bad edge start");
+      if (p.edge_begin[e] <= p.edge_begin[e - 1] || p.edge_begin[e] >= n)
+        fail("panel '" + p.name + "': bad edge start");
     if (outline_self_intersects(p.outline)) fail("panel '" + p.name + "' outline intersects itself");
     for (int e : p.attached_edges)
       if (e < 0 || e >= p.edge_count()) fail("panel '" + p.name + "': attached edge out of range");
@@ -276,51 +420,57 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach) {
   MeshedPattern out;
   out.spacing_cm = h;
   std::vector<PanelGrid> grids;
+  for (const auto& p : pat.panels) grids.push_back(grid_panel(p, h));
+  align_seam_vertices(pat, grids);
   std::vector<int> offset;
-  for (const auto& p : pat.panels) {
-    grids.push_back(grid_panel(p, h));
+  for (std::size_t pi = 0; pi < grids.size(); ++pi) {
+    const Panel& p = pat.panels[pi];
     offset.push_back(out.mesh.vertex_count());
-    out.mesh.append(grids.back().mesh);
-    for (const auto& q : grids.back().uv) {
+    out.mesh.append(panel_mesh(p, grids[pi], h));
+    for (const auto& q : grids[pi].uv) {
       out.uv.conservativeResize(2, out.uv.cols() + 1);
       out.uv.col(out.uv.cols() - 1) = q;
     }
-    out.boundary.insert(out.boundary.end(), grids.back().boundary.begin(), grids.back().boundary.end());
+    out.boundary.insert(out.boundary.end(), grids[pi].boundary.begin(), grids[pi].boundary.end());
     if (attach)
       for (int e : p.attached_edges)
-        for (const auto& [s, v] : grids.back().edge_vertices[static_cast<std::size_t>(e)])
+        for (const auto& [s, v] : grids[pi].edge_vertices[static_cast<std::size_t>(e)])
           out.mesh.attached.push_back(v + offset.back());
   }
   std::vector<std::array<int, 2>> pairs;
   for (const auto& s : pat.seams) {
-    const auto m = match_runs(grids[static_cast<std::size_t>(s.panel_a)].edge_vertices[static_cast<std::size_t>(s.edge_a)],
-                              grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)],
-                              s.reversed);
+    const auto& ra = grids[static_cast<std::size_t>(s.panel_a)].edge_vertices[static_cast<std::size_t>(s.edge_a)];
+    const auto& rb = grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)];
     // a vertex never pairs with itself (the shared tip of a dart)
     int count = 0;
-    for (const auto& pr : m) {
-      const int a = pr[0] + offset[static_cast<std::size_t>(s.panel_a)], b = pr[1] + offset[static_cast<std::size_t>(s.panel_b)];
+    for (const auto& pr : match_runs(ra, rb, s.reversed)) {
+      const int a = pr[0] + offset[static_cast<std::size_t>(s.panel_a)],
+                b = pr[1] + offset[static_cast<std::size_t>(s.panel_b)];
       if (a == b) continue;
       pairs.push_back({a, b});
+      out.seam_offset_cm.push_back(pair_offset_cm(pat, s, ra, rb, pr));
       ++count;
     }
     out.seam_pair_count.push_back(count);
   }
   out.mesh.seam_pairs.resize(2, static_cast<Eigen::Index>(pairs.size()));
-  for (std::size_t i = 0; i < pairs.size(); ++i) out.mesh.seam_pairs.col(static_cast<Eigen::Index>(i)) << pairs[i][0], pairs[i][1];
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    out.mesh.seam_pairs.col(static_cast<Eigen::Index>(i)) << pairs[i][0], pairs[i][1];
   out.mesh.validate("pattern " + pat.name);
   return out;
 }
 
 MeshedPattern mesh_pattern(const Pattern& pat, const MeshingOptions& o) {
   if (o.spacing_cm > 0) return mesh_pattern(pat, o.spacing_cm, o.attach);
-  if (o.target_vertices < 8) throw std::invalid_argument("pattern " + pat.name + ": need a spacing or >= 8 target vertices");
+  if (o.target_vertices < 8)
+    throw std::invalid_argument("pattern " + pat.name + ": need a spacing or >= 8 target vertices");
   // area / spacing^2 ~ vertices: start there, then search the spacing on a log scale
   // (each panel's area counts positive, whichever way its outline turns)
   double area = 0;
   for (const auto& p : pat.panels) {
     double a = 0;
-    for (std::size_t i = 0; i < p.outline.size(); ++i) a += 0.5 * cross(p.outline[i], p.outline[(i + 1) % p.outline.size()]);
+    for (std::size_t i = 0; i < p.outline.size(); ++i)
+      a += 0.5 * cross(p.outline[i], p.outline[(i + 1) % p.outline.size()]);
     area += std::abs(a);
   }
   const double h0 = std::sqrt(area / o.target_vertices);
@@ -344,7 +494,8 @@ ClothMesh place_garment(const MeshedPattern& meshed, const Pattern& pat, const B
   for (int v = 0; v < c.vertex_count(); ++v) {
     const Placement& pl = pat.panels[static_cast<std::size_t>(c.panel[static_cast<std::size_t>(v)])].placement;
     const double u = meshed.uv(0, v), w = meshed.uv(1, v), r = pl.wrap_radius_cm;
-    Vec3 local = r > 0 ? Vec3(static_cast<Real>(r * std::sin(u / r)), static_cast<Real>(w), static_cast<Real>(r * std::cos(u / r) - r))
+    Vec3 local = r > 0 ? Vec3(static_cast<Real>(r * std::sin(u / r)), static_cast<Real>(w),
+                              static_cast<Real>(r * std::cos(u / r) - r))
                        : Vec3(static_cast<Real>(u), static_cast<Real>(w), 0);
     const Vec3 anchor = box.min + pl.anchor.cwiseProduct(box.size());
     c.positions.col(v) = anchor + (placement_rotation(pl) * local + pl.offset_cm) / 100.f;

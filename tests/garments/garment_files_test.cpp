@@ -68,7 +68,8 @@ bool narrow_dart(const Pattern& pat, const Seam& seam, double width) {
   return false;
 }
 
-// Boundary points on their outline; every seam pair joins the two named edges, walked in order;
+// Boundary points on their outline; every seam pair joins the two named edges, walked in order,
+// its partners at the same point of the seam;
 // seams along edges at least two grid spacings long get pairs, except darts narrower than that
 // (a regular grid cannot resolve a notch narrower than its spacing; GarmentCode has such darts).
 void check_meshed(const Pattern& pat, const MeshedPattern& m) {
@@ -99,6 +100,10 @@ void check_meshed(const Pattern& pat, const MeshedPattern& m) {
       const auto [db, tb] = on_edge(pat.panels[static_cast<std::size_t>(seam.panel_b)], seam.edge_b, m.uv.col(b));
       EXPECT_LT(da / 100.0, 1e-6) << "seam " << s << " pair " << k;
       EXPECT_LT(db / 100.0, 1e-6) << "seam " << s << " pair " << k;
+      // partners sit at one pattern point of the seam, within half a grid spacing (where one edge
+      // has a vertex more than the other, or next to a corner) - a seam cannot close a wider offset
+      const double along = std::abs(ta - (seam.reversed ? 1 - tb : tb)) * shorter;
+      EXPECT_LT(along, 0.6 * m.spacing_cm) << "seam " << s << " pair " << k;
       // pairs advance together along both edges (against each other when reversed)
       const double turn = (ta - last_a) * (tb - last_b);
       if (k > 0) {

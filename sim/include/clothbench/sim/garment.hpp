@@ -31,8 +31,8 @@ struct Placement {
 /// One panel: a closed outline (curves already flattened), split into named edges.
 struct Panel {
   std::string name;
-  std::vector<Vec2d> outline;     ///< outline points [cm], not repeating the first; >= 3
-  std::vector<int> edge_begin;    ///< outline index where each edge starts (ascending, first 0)
+  std::vector<Vec2d> outline;   ///< outline points [cm], not repeating the first; >= 3
+  std::vector<int> edge_begin;  ///< outline index where each edge starts (ascending, first 0)
   Placement placement;
   std::vector<int> attached_edges;  ///< edges whose mesh vertices are bound to the body (Durupinar 3.2)
 
@@ -64,10 +64,11 @@ struct MeshingOptions {
 
 /// The meshed pattern before placement: the cloth with 2D pattern coordinates kept.
 struct MeshedPattern {
-  ClothMesh mesh;                   ///< positions hold (u, v, 0) [m] until placed
-  Eigen::Matrix2Xd uv;              ///< pattern coordinates [cm] (2 x nv)
+  ClothMesh mesh;                      ///< positions hold (u, v, 0) [m] until placed
+  Eigen::Matrix2Xd uv;                 ///< pattern coordinates [cm] (2 x nv)
   std::vector<std::uint8_t> boundary;  ///< 1 for vertices placed on the outline (nv)
-  std::vector<int> seam_pair_count; ///< vertex pairs per seam
+  std::vector<int> seam_pair_count;    ///< vertex pairs per seam
+  std::vector<double> seam_offset_cm;  ///< per seam pair: its partners' distance along the seam [cm]
   double spacing_cm = 0;
 };
 
@@ -100,7 +101,6 @@ double distance_to_outline(const std::vector<Vec2d>& outline, const Vec2d& p);
 
 /// Points of a quadratic (one control point) or cubic (two) Bezier from a to b, excluding a,
 /// including b; `segments` >= 1.
-std::vector<Vec2d> flatten_bezier(const Vec2d& a, const std::vector<Vec2d>& controls, const Vec2d& b,
-                                  int segments);
+std::vector<Vec2d> flatten_bezier(const Vec2d& a, const std::vector<Vec2d>& controls, const Vec2d& b, int segments);
 
 }  // namespace clothbench
