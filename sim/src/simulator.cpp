@@ -19,9 +19,12 @@ SeamMethod parse_seam_method(const std::string& name) {
 
 const char* to_string(Phase p) {
   switch (p) {
-    case Phase::kSew: return "sew";
-    case Phase::kDrape: return "drape";
-    case Phase::kAnimate: return "animate";
+    case Phase::kSew:
+      return "sew";
+    case Phase::kDrape:
+      return "drape";
+    case Phase::kAnimate:
+      return "animate";
   }
   return "?";
 }
@@ -37,6 +40,8 @@ Vec3 collision_response(const Vec3& v, const Contact& c, Real friction, Real ref
 }
 
 namespace {
+
+Real reduced_mass(Real a, Real b) { return a * b / (a + b); }
 
 // throws naming the parameter unless lo < value < hi (or <= when inclusive)
 void require(bool ok, const char* name, const std::string& rule, double value) {
@@ -60,6 +65,7 @@ void validate(const Material& m, const SolverParams& p) {
   require(p.gravity.allFinite(), "gravity", "finite", p.gravity.norm());
   require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m (0 = automatic)", p.seam_stiffness);
   require(p.seam_period > 0, "seam_period", "> 0 s", p.seam_period);
+  require(p.seam_reach > 0, "seam_reach", "> 0 m", p.seam_reach);
   require(p.attraction_speed > 0, "attraction_speed", "> 0 m/s", p.attraction_speed);
   require(p.merge_distance > 0, "merge_distance", "> 0 m", p.merge_distance);
   require(p.max_speed > 0, "max_speed", "> 0 m/s", p.max_speed);
@@ -82,12 +88,16 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   k_.resize(ns);
   for (Eigen::Index s = 0; s < ns; ++s) k_[s] = factor * k_kind[static_cast<int>(mesh_.kind[s])];
   m_ = mesh_.vertex_area * material_.density;
-  // elastic seams: given, or mass-relative: every pair gets the cloth's mass per pair, so whole panels
-  // are pulled together in about a quarter of seam_period whatever the resolution
+  // elastic seams: given, or from each pair's reduced mass, k = m_a m_b / (m_a + m_b) (2 pi / seam_period)^2:
+  // a pair on its own closes in a quarter of seam_period, whatever the resolution and however
+  // small a share of a cell a vertex on the outline has (no end is flung off)
   const Eigen::Index np = mesh_.seam_pairs.cols();
   const Real omega = Real(2 * M_PI) / params_.seam_period;
-  const Real auto_k = np ? m_.sum() / Real(np) * omega * omega : Real(0);
-  seam_k_ = Scalars::Constant(np, params_.seam_stiffness > 0 ? params_.seam_stiffness : auto_k);
+  seam_k_.resize(np);
+  for (Eigen::Index p = 0; p < np; ++p)
+    seam_k_[p] = params_.seam_stiffness > 0
+                     ? params_.seam_stiffness
+                     : reduced_mass(m_[mesh_.seam_pairs(0, p)], m_[mesh_.seam_pairs(1, p)]) * omega * omega;
   inv_m_ = m_.cwiseInverse();
   x_ = mesh_.positions;
   v_ = Points3::Zero(3, nv);
@@ -127,7 +137,8 @@ Real Simulator::spectral_dt() const {
   };
   for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) add(mesh_.springs(0, s), mesh_.springs(1, s), k_[s]);
   if (params_.seam_method == SeamMethod::kElastic)
-    for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) add(mesh_.seam_pairs(0, p), mesh_.seam_pairs(1, p), seam_k_[p]);
+    for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
+      add(mesh_.seam_pairs(0, p), mesh_.seam_pairs(1, p), seam_k_[p]);
   const Real omega2 = row.size() ? row.maxCoeff() : Real(0);
   return omega2 > 0 ? Real(2) / std::sqrt(omega2) : Real(1e-2);
 }
@@ -195,12 +206,17 @@ void Simulator::accumulate_forces() {
     col(f_, a) += fa;
     col(f_, b) -= fa;
   }
-  // elastic seams: zero-length springs between partners not yet merged
-  if (phase_ != Phase::kSew || params_.seam_method != SeamMethod::kElastic) return;
+  // elastic seams: zero-length springs between partners not yet merged, in every phase (a seam
+  // left open by the sew phase keeps pulling while the garment drapes; it does not come apart)
+  if (params_.seam_method != SeamMethod::kElastic) return;
   for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
     if (merged_[static_cast<std::size_t>(p)]) continue;
     const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
-    const Vec3 fa = -seam_k_[p] * (x_.col(a) - x_.col(b));
+    // a zero-length spring near the seam, a constant pull beyond seam_reach (panels placed far
+    // apart are drawn together without a start-up jolt)
+    const Vec3 d = x_.col(a) - x_.col(b);
+    const Real len = d.norm();
+    const Vec3 fa = -seam_k_[p] * (len > params_.seam_reach ? Vec3(d * (params_.seam_reach / len)) : d);
     col(f_, a) += fa;
     col(f_, b) -= fa;
   }

@@ -86,6 +86,54 @@ bool runs_stably(Real dt_multiple, int steps) {
   return !sim.divergence().has_value();
 }
 
+// two free particles, the second `ratio` times lighter, sewn together across `gap` [m]
+ClothMesh seam_pair(Real gap, Real ratio) {
+  ClothMesh c = two_particles(gap, 0);
+  c.vertex_area << 1, 1 / ratio;
+  c.springs.resize(2, 0);
+  c.rest_length.resize(0);
+  c.kind.clear();
+  c.seam_pairs.resize(2, 1);
+  c.seam_pairs << 0, 1;
+  return c;
+}
+
+SolverParams seam_params() {
+  SolverParams p;
+  p.limit = Limit::kNone;
+  p.seam_period = 0.05f;
+  p.seam_reach = 0.05f;
+  p.merge_distance = 1e-7f;
+  p.dt = 1e-5f;  // a fine step, so the measured closing time is the seam's, not the integrator's
+  return p;
+}
+
+TEST(Simulator, AutomaticSeamClosesAPairInAQuarterPeriodWhateverItsMasses) {
+  Material mat;
+  mat.damping = 0;
+  for (Real ratio : {1.f, 100.f}) {
+    Simulator sim(seam_pair(0.01f, ratio), mat, seam_params());
+    sim.set_phase(Phase::kSew);
+    long it = 0;
+    while ((sim.positions().col(1) - sim.positions().col(0)).x() > 0 && it < 100000 && sim.step()) ++it;
+    EXPECT_NEAR(double(it) * sim.dt(), 0.05 / 4, 0.02 * 0.05 / 4) << "mass ratio " << ratio;
+  }
+}
+
+TEST(Simulator, SeamsBeyondTheirReachPullNoHarder) {
+  // 50 cm apart, a vertex 100 times lighter than its partner: its speed after one step is at most
+  // (2 pi / seam_period)^2 seam_reach dt, not 10 times that
+  Material mat;
+  mat.damping = 0;
+  const SolverParams p = seam_params();
+  Simulator sim(seam_pair(0.5f, 100), mat, p);
+  sim.set_phase(Phase::kSew);
+  ASSERT_TRUE(sim.step());
+  const double omega = 2 * M_PI / p.seam_period;
+  EXPECT_LE(sim.velocities().col(1).norm(), omega * omega * p.seam_reach * sim.dt() * 1.001);
+  EXPECT_GT(sim.velocities().col(1).norm(), 0.9 * omega * omega * p.seam_reach * sim.dt());
+}
+
 TEST(Simulator, EulerStableBelowEq4BoundAndUnstableWellAbove) {
   EXPECT_TRUE(runs_stably(0.95f, 3000));
   EXPECT_FALSE(runs_stably(3.0f, 3000));

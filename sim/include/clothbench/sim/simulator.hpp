@@ -15,13 +15,13 @@ namespace clothbench {
 
 /// Cloth material. Stiffness per spring kind is the k of Eq. 2.
 struct Material {
-  Real density = 0.15f;          ///< mass per area [kg/m^2]
-  Real k_structural = 60.f;      ///< [N/m]
-  Real k_shear = 20.f;           ///< [N/m]
-  Real k_flexion = 10.f;         ///< [N/m]
-  Real damping = 0.002f;         ///< C_vd of the viscous force -C_vd v [N s/m]
-  Real friction = 0.6f;          ///< C_fric of Eq. 12/15/16
-  Real reflection = 0.0f;        ///< C_refl of Eq. 12/15
+  Real density = 0.15f;      ///< mass per area [kg/m^2]
+  Real k_structural = 60.f;  ///< [N/m]
+  Real k_shear = 20.f;       ///< [N/m]
+  Real k_flexion = 10.f;     ///< [N/m]
+  Real damping = 0.002f;     ///< C_vd of the viscous force -C_vd v [N s/m]
+  Real friction = 0.6f;      ///< C_fric of Eq. 12/15/16
+  Real reflection = 0.0f;    ///< C_refl of Eq. 12/15
 };
 
 /// How super-elasticity is limited (dressing section 4, walking section 3).
@@ -42,20 +42,21 @@ const char* to_string(Phase p);
 
 /// Solver parameters; every field has a documented default.
 struct SolverParams {
-  Real dt = 0;                   ///< time step [s]; 0 = automatic: dt_fraction x min(Eq. 4 bound, spectral_dt)
-  Real dt_fraction = 0.9f;       ///< automatic dt as a fraction of the Eq. 4 bound (0, 1]
-  bool allow_unstable_dt = false;///< accept a given dt above the Eq. 4 bound (stability studies)
-  Limit limit = Limit::kVelocity;///< super-elasticity limit
-  Real threshold = 0.10f;        ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
-  Real stiff_factor = 10.f;      ///< Limit::kStiff multiplies every stiffness by this
-  int limit_passes = 1;          ///< passes of the position/velocity limit over all springs per iteration
-  bool face_queries = false;     ///< also query quad midpoints (dressing section 6)
-  bool reaction_force = false;   ///< add the reaction force of walking Eq. 16
+  Real dt = 0;                           ///< time step [s]; 0 = automatic: dt_fraction x min(Eq. 4 bound, spectral_dt)
+  Real dt_fraction = 0.9f;               ///< automatic dt as a fraction of the Eq. 4 bound (0, 1]
+  bool allow_unstable_dt = false;        ///< accept a given dt above the Eq. 4 bound (stability studies)
+  Limit limit = Limit::kVelocity;        ///< super-elasticity limit
+  Real threshold = 0.10f;                ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
+  Real stiff_factor = 10.f;              ///< Limit::kStiff multiplies every stiffness by this
+  int limit_passes = 1;                  ///< passes of the position/velocity limit over all springs per iteration
+  bool face_queries = false;             ///< also query quad midpoints (dressing section 6)
+  bool reaction_force = false;           ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
   Real seam_stiffness = 0;       ///< elastic seam springs (rest length 0) [N/m]; 0 = automatic from seam_period
-  Real seam_period = 0.5f;       ///< automatic seam stiffness: every pair k = (cloth mass / pairs) (2 pi / seam_period)^2
-                                 ///< [s], so panels close in about a quarter of it whatever the resolution
+  Real seam_period = 0.012f;     ///< automatic seam stiffness: every pair k = reduced mass (2 pi / seam_period)^2 [s]:
+                                 ///< a pair on its own closes in a quarter of it, whatever the resolution
+  Real seam_reach = 0.05f;       ///< elastic seams pull with k |d| up to this gap and with k seam_reach beyond [m]
   Real attraction_speed = 0.5f;  ///< c_attraction of Durupinar Eq. 1 [m/s]
   Real merge_distance = 0.002f;  ///< seam pairs closer than this are merged [m]
   Real max_speed = 50.f;         ///< divergence: any vertex faster than this [m/s]
@@ -67,7 +68,7 @@ struct Divergence {
   long iteration = 0;
   Phase phase = Phase::kSew;
   int vertex = -1;
-  std::string reason;            ///< "NaN", "speed ...", "left the scene bounds"
+  std::string reason;  ///< "NaN", "speed ...", "left the scene bounds"
 };
 
 /// Spring strain statistics over structural springs: (|p1 - p2| - l0) / l0.
@@ -78,8 +79,8 @@ struct StrainStats {
 
 /// Cumulative per-phase timings [ms] and counts; CD&R and CS as in walking Table 1.
 struct SimTimings {
-  double cdr_ms = 0;   ///< collision detection (collider query) and response
-  double cs_ms = 0;    ///< cloth simulation: forces, integration, limits, seaming
+  double cdr_ms = 0;  ///< collision detection (collider query) and response
+  double cs_ms = 0;   ///< cloth simulation: forces, integration, limits, seaming
   long iterations = 0;
 };
 
@@ -100,8 +101,8 @@ Vec3 collision_response(const Vec3& v, const Contact& contact, Real friction, Re
 /// held (attached, in contact with the body, or already following a held point this iteration)
 /// cannot catch up, so the front follows it instead; taken literally the rule diverges on a
 /// hanging cloth (measured in tests/sim).
-std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1,
-                                             Real wb = 1, Real target = 0);
+std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1, Real wb = 1,
+                                             Real target = 0);
 
 /// One cloth, one collider (not owned), explicit Euler.
 class Simulator {
@@ -111,7 +112,8 @@ class Simulator {
 
   /// The collider to query each iteration (may be null: no collisions). Not owned.
   void set_collider(Collider* collider) { collider_ = collider; }
-  /// Sets the phase: kSew turns gravity off and seam forces on; kDrape/kAnimate the reverse.
+  /// Sets the phase: kSew turns gravity off (and Durupinar's attraction on); kDrape/kAnimate turn
+  /// gravity on. Elastic seams pull in every phase until their pairs merge.
   void set_phase(Phase phase) { phase_ = phase; }
   Phase phase() const { return phase_; }
 
@@ -138,7 +140,7 @@ class Simulator {
   const Points3& velocities() const { return v_; }  ///< [m/s] (3 x nv)
   Points3& positions() { return x_; }
   Points3& velocities() { return v_; }
-  const Scalars& masses() const { return m_; }      ///< [kg] (nv)
+  const Scalars& masses() const { return m_; }  ///< [kg] (nv)
   /// Quad midpoints of the current positions (3 x nq); what face queries test.
   const Points3& quad_midpoints() const { return mid_; }
 
@@ -182,11 +184,11 @@ class Simulator {
   Points3 x_, v_, f_;  // positions [m], velocities [m/s], forces [N] (3 x nv)
   Points3 mid_;        // quad midpoints [m] (3 x nq)
   std::vector<Contact> contacts_;
-  std::vector<std::uint8_t> merged_;   // per seam pair
-  std::vector<std::uint8_t> held_;     // per vertex, directional limit: attached, in contact, or following one
-  std::vector<int> attach_tri_;        // per attached vertex
-  Points3 attach_bary_;                // (3 x na)
-  Points3 attach_offset_;              // attached vertex minus its binding point [m] (3 x na)
+  std::vector<std::uint8_t> merged_;  // per seam pair
+  std::vector<std::uint8_t> held_;    // per vertex, directional limit: attached, in contact, or following one
+  std::vector<int> attach_tri_;       // per attached vertex
+  Points3 attach_bary_;               // (3 x na)
+  Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
   Box3 start_box_;
   Collider* collider_ = nullptr;
   Phase phase_ = Phase::kDrape;
