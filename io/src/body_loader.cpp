@@ -5,11 +5,17 @@
 #include <algorithm>
 #include <array>
 #include <assimp/Importer.hpp>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <functional>
 #include <unordered_map>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "body_model_impl.hpp"
 #include "clothbench/io/errors.hpp"
@@ -84,7 +90,8 @@ void add_mesh(const aiMesh& mesh, int node, const Mat4d& global, BodyModelImpl& 
       ++soup.skipped_faces;
       continue;
     }
-    soup.triangles.push_back({base + int(face.mIndices[0]), base + int(face.mIndices[1]), base + int(face.mIndices[2])});
+    soup.triangles.push_back(
+        {base + int(face.mIndices[0]), base + int(face.mIndices[1]), base + int(face.mIndices[2])});
   }
 }
 
@@ -260,6 +267,19 @@ Channel read_channel(const aiNodeAnim& a, double tps) {
   return c;
 }
 
+// every key time and value is a finite number
+bool finite(const Channel& c) {
+  auto times = [](const std::vector<double>& t) {
+    return std::all_of(t.begin(), t.end(), [](double x) { return std::isfinite(x); });
+  };
+  auto vectors = [](const std::vector<Eigen::Vector3d>& v) {
+    return std::all_of(v.begin(), v.end(), [](const Eigen::Vector3d& x) { return x.allFinite(); });
+  };
+  const bool rotations =
+      std::all_of(c.rot.begin(), c.rot.end(), [](const Eigen::Quaterniond& q) { return q.coeffs().allFinite(); });
+  return times(c.pos_t) && times(c.rot_t) && times(c.scale_t) && vectors(c.pos) && vectors(c.scale) && rotations;
+}
+
 // animations in seconds (assimp's default of 25 ticks/s when the file gives none)
 void read_animations(const aiScene& scene, BodyModelImpl& m) {
   for (unsigned i = 0; i < scene.mNumAnimations; ++i) {
@@ -269,12 +289,18 @@ void read_animations(const aiScene& scene, BodyModelImpl& m) {
     anim.info.name = a.mName.length > 0 ? a.mName.C_Str() : "animation_" + std::to_string(i);
     anim.info.ticks_per_second = tps;
     anim.info.duration_s = a.mDuration / tps;
+    if (!std::isfinite(anim.info.duration_s) || !std::isfinite(tps))
+      throw InputError(located(m.path, 0, "animation '" + anim.info.name + "': non-finite duration or tick rate"));
     anim.node_channel.assign(m.nodes.size(), -1);
     for (unsigned c = 0; c < a.mNumChannels; ++c) {
       const int node = node_by_name(m, a.mChannels[c]->mNodeName.C_Str());
       if (node < 0) continue;  // a channel for a node not in the hierarchy moves nothing
       anim.node_channel[node] = static_cast<int>(anim.channels.size());
       anim.channels.push_back(read_channel(*a.mChannels[c], tps));
+      if (!finite(anim.channels.back()))
+        throw InputError(located(m.path, 0,
+                                 "animation '" + anim.info.name + "', node '" + a.mChannels[c]->mNodeName.C_Str() +
+                                     "': non-finite key time or value"));
     }
     anim.info.channels = static_cast<int>(anim.channels.size());
     m.infos.push_back(anim.info);
@@ -297,12 +323,52 @@ void find_bones_and_root(BodyModelImpl& m) {
   }
 }
 
-const aiScene* read_scene(Assimp::Importer& importer, const std::string& path) {
+constexpr unsigned kReadFlags =
+    aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
+
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", s);
+  return buf;
+}
+
+// Reads the file with assimp in a child process (killed after timeout_s) and throws when assimp
+// crashed or hung there; returns when the child finished, whatever assimp made of the file (the
+// real read then reports that). When fork fails nothing is checked.
+void read_in_child(const std::string& path, double timeout_s) {
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) return;
+  if (pid == 0) {
+    alarm(static_cast<unsigned>(std::ceil(timeout_s)));
+    Assimp::Importer importer;
+    importer.ReadFile(path, kReadFlags);  // a file assimp rejects cleanly is reported by the real read
+    _exit(0);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return;
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+  if (WIFEXITED(status))  // a sanitizer turns a crash into an exit code
+    throw InputError(located(path, 0,
+                             "assimp crashed reading it (exit code " + std::to_string(WEXITSTATUS(status)) +
+                                 "): the file is malformed or uses something assimp mishandles"));
+  const int sig = WTERMSIG(status);
+  if (sig == SIGALRM)
+    throw InputError(located(
+        path, 0,
+        "assimp did not finish reading it within " + seconds(timeout_s) + " s (a malformed file can make it loop)"));
+  throw InputError(located(path, 0,
+                           std::string("assimp crashed reading it (") + strsignal(sig) +
+                               "): the file is malformed or uses something assimp mishandles"));
+}
+
+const aiScene* read_scene(Assimp::Importer& importer, const std::string& path, double isolate_timeout_s) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(located(path, 0, "file not found"));
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(located(path, 0, "not a regular file"));
-  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
-  const aiScene* scene = importer.ReadFile(path, flags);
+  if (isolate_timeout_s > 0) read_in_child(path, isolate_timeout_s);
+  const aiScene* scene = importer.ReadFile(path, kReadFlags);
   if (!scene) throw InputError(located(path, 0, std::string("cannot be read as a mesh: ") + importer.GetErrorString()));
   if (!scene->mRootNode || scene->mNumMeshes == 0) throw InputError(located(path, 0, "contains no meshes"));
   return scene;
@@ -312,7 +378,7 @@ const aiScene* read_scene(Assimp::Importer& importer, const std::string& path) {
 
 BodyModel load_body(const std::string& path, const BodyLoadOptions& options) {
   Assimp::Importer importer;
-  const aiScene* scene = read_scene(importer, path);
+  const aiScene* scene = read_scene(importer, path, options.isolate_timeout_s);
   auto m = std::make_unique<BodyModelImpl>();
   m->path = path;
   std::unordered_map<const aiNode*, int> ids;
@@ -320,8 +386,9 @@ BodyModel load_body(const std::string& path, const BodyLoadOptions& options) {
   Soup soup;
   collect_meshes(*scene, *m, ids, soup, path);
   if (soup.triangles.empty())
-    throw InputError(located(path, 0, "has no triangles (" + std::to_string(soup.skipped_faces) +
-                                          " point/line faces; nothing assimp could triangulate)"));
+    throw InputError(located(path, 0,
+                             "has no triangles (" + std::to_string(soup.skipped_faces) +
+                                 " point/line faces; nothing assimp could triangulate)"));
   weld(soup, *m);
   if (m->rest.triangles.cols() == 0) throw InputError(located(path, 0, "has only degenerate triangles"));
   if (!m->rest.positions.allFinite()) throw InputError(located(path, 0, "has non-finite vertex coordinates"));
@@ -336,8 +403,9 @@ BodyModel load_body(const std::string& path, const BodyLoadOptions& options) {
   finish_static_body(m->rest);
   const EdgeCheck edges = check_edges(m->rest.triangles);
   if (options.require_closed && !edges.closed())
-    throw InputError(located(path, 0, "is not closed: " + std::to_string(edges.boundary_edges) + " boundary edges, " +
-                                          std::to_string(edges.non_manifold_edges) + " non-manifold edges"));
+    throw InputError(located(path, 0,
+                             "is not closed: " + std::to_string(edges.boundary_edges) + " boundary edges, " +
+                                 std::to_string(edges.non_manifold_edges) + " non-manifold edges"));
   return BodyModel(std::move(m));
 }
 

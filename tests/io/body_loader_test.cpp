@@ -20,14 +20,15 @@ std::string walking_body() {
   return std::filesystem::exists(path) ? path : "";
 }
 
-#define REQUIRE_WALKING_BODY(path)                                                      \
-  const std::string path = walking_body();                                              \
+#define REQUIRE_WALKING_BODY(path)         \
+  const std::string path = walking_body(); \
   if (path.empty()) GTEST_SKIP() << "shared data root absent (" << data_root() << ")"
 
 // largest distance from a vertex of `a` to the nearest vertex of `b` [m] (order-free comparison)
 double max_nearest_distance(const Points3& a, const Points3& b) {
   double worst = 0;
-  for (Eigen::Index i = 0; i < a.cols(); ++i) worst = std::max(worst, double((b.colwise() - a.col(i)).colwise().squaredNorm().minCoeff()));
+  for (Eigen::Index i = 0; i < a.cols(); ++i)
+    worst = std::max(worst, double((b.colwise() - a.col(i)).colwise().squaredNorm().minCoeff()));
   return std::sqrt(worst);
 }
 
@@ -133,6 +134,25 @@ TEST(BodyLoader, BadFilesGiveClearErrors) {
   EXPECT_EQ(load_body(kBad + "body_open.obj", open_ok).rest().triangles.cols(), 2);
 }
 
+// files on which Debian's assimp (5.2) crashes or loops (fuzz/assimp-findings): a clear error, and
+// the test process survives
+const std::string kAssimpFindings = std::string(CLOTHBENCH_SOURCE_DIR) + "/fuzz/assimp-findings/";
+
+TEST(BodyLoader, AssimpCrashesAndHangsBecomeErrors) {
+  BodyLoadOptions quick;
+  quick.isolate_timeout_s = 3;
+  expect_input_error(kAssimpFindings + "skin_without_inverse_bind_matrices.glb", "assimp crashed", quick);
+  expect_input_error(kAssimpFindings + "ply_more_faces_declared_than_given.ply", "assimp crashed", quick);
+  expect_input_error(kAssimpFindings + "ply_header_without_end_header.ply", "did not finish reading it within 3 s",
+                     quick);
+}
+
+TEST(BodyLoader, NonFiniteAnimationKeysAreRejected) {
+  BodyLoadOptions open_ok;
+  open_ok.require_closed = false;
+  expect_input_error(kBad + "body_nan_animation_key.gltf", "non-finite key", open_ok);
+}
+
 TEST(BodyLoader, BadAnimationOrTime) {
   REQUIRE_WALKING_BODY(path);
   const BodyModel body = load_body(path);
@@ -153,6 +173,8 @@ TEST(BodyCommand, ExitCodes) {
   EXPECT_EQ(run(kBad + "body_open.obj"), 2);
   EXPECT_EQ(run(kBad + "body_junk.glb"), 2);
   EXPECT_EQ(run(kBad + "missing.glb"), 2);
+  EXPECT_EQ(run(kAssimpFindings + "skin_without_inverse_bind_matrices.glb"), 2);
+  EXPECT_EQ(run(kAssimpFindings + "ply_more_faces_declared_than_given.ply"), 2);
   EXPECT_EQ(run(kBad + "body_open.obj --open-ok --json"), 0);
   const std::string walk = walking_body();
   if (walk.empty()) return;

@@ -12,9 +12,13 @@ namespace clothbench {
 
 /// How load_body treats the file.
 struct BodyLoadOptions {
-  bool require_closed = true;  ///< throw InputError when the welded mesh has boundary/non-manifold edges
-  bool drop_open_parts = true; ///< remove small open parts (< 10 % of the vertices: eyes, lashes), reported
-  bool normalise = true;       ///< convert to metres, +Y up, soles at y = 0 (else keep the file's frame)
+  bool require_closed = true;   ///< throw InputError when the welded mesh has boundary/non-manifold edges
+  bool drop_open_parts = true;  ///< remove small open parts (< 10 % of the vertices: eyes, lashes), reported
+  bool normalise = true;        ///< convert to metres, +Y up, soles at y = 0 (else keep the file's frame)
+  /// assimp crashes or loops on some malformed files (fuzz/assimp-findings): the file is first read
+  /// in a child process, and a crash, or no answer within this many seconds, is an InputError.
+  /// 0 reads it in this process only (faster; for trusted files and fuzzing).
+  double isolate_timeout_s = 60;
 };
 
 /// One animation of the file.
