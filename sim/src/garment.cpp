@@ -282,31 +282,71 @@ std::map<int, double> seam_anchors(const std::vector<std::pair<double, int>>& fi
   return anchors;
 }
 
+// Whether some vertex of the panel sits at pattern point p.
+bool occupied(const PanelGrid& g, const Vec2d& p) {
+  return std::any_of(g.uv.begin(), g.uv.end(), [&](const Vec2d& q) { return (q - p).norm() < 1e-9; });
+}
+
+// Whether vertex v lies on more than one edge of the panel (a corner, or where edges touch).
+bool on_several_edges(const PanelGrid& g, int v) {
+  int runs = 0;
+  for (const auto& run : g.edge_vertices)
+    runs += std::any_of(run.begin(), run.end(), [&](const auto& tv) { return tv.second == v; });
+  return runs > 1;
+}
+
+// Where one edge of a seam has a vertex on a corner and the other's end vertex lies less than a
+// grid spacing h short of the matching corner, that vertex moves onto the corner (when its panel has no vertex there
+// and its edge was not aligned by an earlier seam), so the seam's end pairs join corner to corner.
+void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<PanelGrid>& grids, bool a_locked,
+                    bool b_locked) {
+  PanelGrid& ga = grids[static_cast<std::size_t>(s.panel_a)];
+  PanelGrid& gb = grids[static_cast<std::size_t>(s.panel_b)];
+  auto& ra = ga.edge_vertices[static_cast<std::size_t>(s.edge_a)];
+  auto& rb = gb.edge_vertices[static_cast<std::size_t>(s.edge_b)];
+  if (ra.empty() || rb.empty()) return;
+  const Panel& pa = pat.panels[static_cast<std::size_t>(s.panel_a)];
+  const Panel& pb = pat.panels[static_cast<std::size_t>(s.panel_b)];
+  for (const double ta : {0.0, 1.0}) {
+    const double tb = s.reversed ? 1 - ta : ta;
+    auto& va = ta > 0.5 ? ra.back() : ra.front();
+    auto& vb = tb > 0.5 ? rb.back() : rb.front();
+    const bool a_on = std::abs(va.first - ta) < 1e-9, b_on = std::abs(vb.first - tb) < 1e-9;
+    const bool a_near = std::abs(va.first - ta) * edge_length(pa, s.edge_a) < h && !on_several_edges(ga, va.second);
+    const bool b_near = std::abs(vb.first - tb) * edge_length(pb, s.edge_b) < h && !on_several_edges(gb, vb.second);
+    if (a_on && !b_on && b_near && !b_locked && !occupied(gb, point_on_edge(pb, s.edge_b, tb))) vb.first = tb;
+    if (b_on && !a_on && a_near && !a_locked && !occupied(ga, point_on_edge(pa, s.edge_a, ta))) va.first = ta;
+  }
+}
+
+// Moves the vertices of an edge run to the pattern points of their arc fractions.
+void place_run(const Panel& p, int edge, PanelGrid& g) {
+  for (const auto& [t, v] : g.edge_vertices[static_cast<std::size_t>(edge)])
+    g.uv[static_cast<std::size_t>(v)] = point_on_edge(p, edge, t);
+}
+
 // Sewn edges get their boundary vertices at matching arc fractions, so every seam pair joins the
 // same pattern point on both sides (a mismatch would leave a gap the seam can never close). The
 // first seam to touch an edge spreads the shorter run evenly and moves the other onto it; an edge
 // already placed by an earlier seam stays fixed.
-void align_seam_vertices(const Pattern& pat, std::vector<PanelGrid>& grids) {
+void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& grids) {
   std::set<std::pair<int, int>> done;
   for (const auto& s : pat.seams) {
     auto& ra = grids[static_cast<std::size_t>(s.panel_a)].edge_vertices[static_cast<std::size_t>(s.edge_a)];
     auto& rb = grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)];
     const bool a_done = done.count({s.panel_a, s.edge_a}) > 0, b_done = done.count({s.panel_b, s.edge_b}) > 0;
     if ((a_done && b_done) || &ra == &rb) continue;
+    snap_seam_ends(pat, s, h, grids, a_done, b_done);
     const bool a_fixed = a_done || (!b_done && ra.size() <= rb.size());
     auto& fixed = a_fixed ? ra : rb;
     auto& free_run = a_fixed ? rb : ra;
     if (!(a_fixed ? a_done : b_done)) respace_run(fixed, {});
     respace_run(free_run, seam_anchors(fixed, free_run, s.reversed));
+    place_run(pat.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a, grids[static_cast<std::size_t>(s.panel_a)]);
+    place_run(pat.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b, grids[static_cast<std::size_t>(s.panel_b)]);
     done.insert({s.panel_a, s.edge_a});
     done.insert({s.panel_b, s.edge_b});
   }
-  // move the vertices to their new fractions
-  for (std::size_t pi = 0; pi < grids.size(); ++pi)
-    for (const auto& [panel, edge] : done)
-      if (panel == static_cast<int>(pi))
-        for (const auto& [t, v] : grids[pi].edge_vertices[static_cast<std::size_t>(edge)])
-          grids[pi].uv[static_cast<std::size_t>(v)] = point_on_edge(pat.panels[pi], edge, t);
 }
 
 // Pairs two vertex runs by arc position (fraction of the edge length, so edges of different
@@ -421,7 +461,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach) {
   out.spacing_cm = h;
   std::vector<PanelGrid> grids;
   for (const auto& p : pat.panels) grids.push_back(grid_panel(p, h));
-  align_seam_vertices(pat, grids);
+  align_seam_vertices(pat, h, grids);
   std::vector<int> offset;
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
     const Panel& p = pat.panels[pi];
