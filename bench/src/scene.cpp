@@ -166,6 +166,7 @@ void read_solver(Section s, SolverParams& p) {
   s.number("seam_stiffness", p.seam_stiffness, 0, 1e7);
   s.number("seam_period", p.seam_period, 1e-4, 100);
   s.number("seam_reach", p.seam_reach, 1e-4, 10);
+  s.number("seam_speed", p.seam_speed, 1e-4, 100);
   s.number("attraction_speed", p.attraction_speed, 0, 100);
   s.number("merge_distance", p.merge_distance, 0, 1);
   s.number("max_speed", p.max_speed, 1e-3, 1e6);

@@ -66,6 +66,7 @@ void validate(const Material& m, const SolverParams& p) {
   require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m (0 = automatic)", p.seam_stiffness);
   require(p.seam_period > 0, "seam_period", "> 0 s", p.seam_period);
   require(p.seam_reach > 0, "seam_reach", "> 0 m", p.seam_reach);
+  require(p.seam_speed > 0, "seam_speed", "> 0 m/s", p.seam_speed);
   require(p.attraction_speed > 0, "attraction_speed", "> 0 m/s", p.attraction_speed);
   require(p.merge_distance > 0, "merge_distance", "> 0 m", p.merge_distance);
   require(p.max_speed > 0, "max_speed", "> 0 m/s", p.max_speed);
@@ -88,9 +89,9 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   k_.resize(ns);
   for (Eigen::Index s = 0; s < ns; ++s) k_[s] = factor * k_kind[static_cast<int>(mesh_.kind[s])];
   m_ = mesh_.vertex_area * material_.density;
-  // elastic seams: given, or from each pair's reduced mass, k = m_a m_b / (m_a + m_b) (2 pi / seam_period)^2:
-  // a pair on its own closes in a quarter of seam_period, whatever the resolution and however
-  // small a share of a cell a vertex on the outline has (no end is flung off)
+  // elastic seams: a zero-length spring per pair, given, or from the pair's reduced mass
+  // mu = m_a m_b / (m_a + m_b): k = mu (2 pi / seam_period)^2, whatever the resolution and however
+  // small a share of a cell a vertex on the outline has
   const Eigen::Index np = mesh_.seam_pairs.cols();
   const Real omega = Real(2 * M_PI) / params_.seam_period;
   seam_k_.resize(np);
@@ -157,6 +158,7 @@ bool Simulator::step() {
   cs.restart();
   integrate_velocities();
   limit_velocities();
+  if (params_.seam_method == SeamMethod::kElastic) cap_seam_speeds();
   if (phase_ == Phase::kSew && params_.seam_method == SeamMethod::kAttraction) attract_seams();
   cs_ms += cs.ms();
   cdr.restart();
@@ -212,11 +214,12 @@ void Simulator::accumulate_forces() {
   for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
     if (merged_[static_cast<std::size_t>(p)]) continue;
     const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
-    // a zero-length spring near the seam, a constant pull beyond seam_reach (panels placed far
-    // apart are drawn together without a start-up jolt)
     const Vec3 d = x_.col(a) - x_.col(b);
     const Real len = d.norm();
-    const Vec3 fa = -seam_k_[p] * (len > params_.seam_reach ? Vec3(d * (params_.seam_reach / len)) : d);
+    if (!(len > 0)) continue;
+    const Vec3 dir = d / len;
+    // pulling no harder than k seam_reach: panels placed far apart are drawn in without a jolt
+    const Vec3 fa = -seam_k_[p] * std::min(len, params_.seam_reach) * dir;
     col(f_, a) += fa;
     col(f_, b) -= fa;
   }
@@ -238,6 +241,23 @@ void Simulator::add_reaction_forces() {
 void Simulator::integrate_velocities() {
   // dressing Eq. 3: a = f/m, v += dt a (attached vertices have 1/m = 0)
   v_ += dt_ * (f_.array().rowwise() * inv_m_.transpose().array()).matrix();
+}
+
+void Simulator::cap_seam_speeds() {
+  // partners of an open seam approach each other at seam_speed at most: the excess of their
+  // closing speed is removed along the seam, shared by inverse mass (momentum is kept)
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
+    if (merged_[static_cast<std::size_t>(p)]) continue;
+    const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
+    const Vec3 d = x_.col(a) - x_.col(b);
+    const Real len = d.norm(), w = inv_m_[a] + inv_m_[b];
+    if (!(len > 0) || !(w > 0)) continue;
+    const Vec3 dir = d / len;
+    const Real excess = -(v_.col(a) - v_.col(b)).dot(dir) - params_.seam_speed;
+    if (excess <= 0) continue;
+    col(v_, a) += (excess * inv_m_[a] / w) * dir;
+    col(v_, b) -= (excess * inv_m_[b] / w) * dir;
+  }
 }
 
 void Simulator::attract_seams() {

@@ -103,6 +103,7 @@ SolverParams seam_params() {
   p.limit = Limit::kNone;
   p.seam_period = 0.05f;
   p.seam_reach = 0.05f;
+  p.seam_speed = 100;  // no speed cap here
   p.merge_distance = 1e-7f;
   p.dt = 1e-5f;  // a fine step, so the measured closing time is the seam's, not the integrator's
   return p;
@@ -132,6 +133,24 @@ TEST(Simulator, SeamsBeyondTheirReachPullNoHarder) {
   const double omega = 2 * M_PI / p.seam_period;
   EXPECT_LE(sim.velocities().col(1).norm(), omega * omega * p.seam_reach * sim.dt() * 1.001);
   EXPECT_GT(sim.velocities().col(1).norm(), 0.9 * omega * omega * p.seam_reach * sim.dt());
+}
+
+TEST(Simulator, SeamsCloseNoFasterThanTheirSpeed) {
+  // 30 cm apart with the default seam: the partners approach at seam_speed (2 m/s), not at the
+  // sqrt(2 k reach d / mu) ~ 86 m/s an uncapped pull would reach over 30 cm, and still meet
+  Material mat;
+  mat.damping = 0;
+  SolverParams p;
+  p.limit = Limit::kNone;
+  p.merge_distance = 1e-4f;
+  Simulator sim(seam_pair(0.3f, 1), mat, p);
+  sim.set_phase(Phase::kSew);
+  double fastest = 0;
+  for (int i = 0; i < 20000 && sim.seam_gap_max() > 1e-3f && sim.step(); ++i)
+    fastest = std::max(fastest, double((sim.velocities().col(1) - sim.velocities().col(0)).norm()));
+  EXPECT_LT(sim.seam_gap_max(), 1e-3f);
+  EXPECT_LT(fastest, 1.1 * p.seam_speed);
+  EXPECT_GT(fastest, 0.9 * p.seam_speed);
 }
 
 TEST(Simulator, EulerStableBelowEq4BoundAndUnstableWellAbove) {

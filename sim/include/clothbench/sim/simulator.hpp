@@ -54,9 +54,10 @@ struct SolverParams {
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
   Real seam_stiffness = 0;       ///< elastic seam springs (rest length 0) [N/m]; 0 = automatic from seam_period
-  Real seam_period = 0.012f;     ///< automatic seam stiffness: every pair k = reduced mass (2 pi / seam_period)^2 [s]:
+  Real seam_period = 0.004f;     ///< automatic seam stiffness: every pair k = reduced mass (2 pi / seam_period)^2 [s]:
                                  ///< a pair on its own closes in a quarter of it, whatever the resolution
-  Real seam_reach = 0.05f;       ///< elastic seams pull with k |d| up to this gap and with k seam_reach beyond [m]
+  Real seam_reach = 0.005f;      ///< elastic seams pull with k |d| up to this gap and no harder beyond it [m]
+  Real seam_speed = 2.f;         ///< partners of an elastic seam approach each other no faster than this [m/s]
   Real attraction_speed = 0.5f;  ///< c_attraction of Durupinar Eq. 1 [m/s]
   Real merge_distance = 0.002f;  ///< seam pairs closer than this are merged [m]
   Real max_speed = 50.f;         ///< divergence: any vertex faster than this [m/s]
@@ -167,6 +168,7 @@ class Simulator {
   void limit_velocities();
   void limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s);
   Vec3 spring_object_velocity(int a, int b) const;
+  void cap_seam_speeds();
   void attract_seams();
   void respond();
   void integrate_positions();
