@@ -8,6 +8,7 @@
 #include <string>
 
 #include "clothbench/collide_is/map_set.hpp"
+#include "clothbench/config.h"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/errors.hpp"
 #include "clothbench/sim/timer.hpp"
@@ -17,11 +18,18 @@
 namespace clothbench::cli {
 namespace {
 
+// OpenGL (OSMesa) in builds with CLOTHBENCH_WITH_GL, else the CPU rasteriser
+#ifdef CLOTHBENCH_WITH_GL
+constexpr const char* kDefaultRenderer = "gl";
+#else
+constexpr const char* kDefaultRenderer = "cpu";
+#endif
+
 struct MapsArgs {
   std::string body;
   std::string animation;
   double at_s = 0;
-  std::string renderer = "gl";
+  std::string renderer = kDefaultRenderer;
   int size = 320;
   std::string png_dir;
 };
@@ -58,6 +66,12 @@ void write_pair(const MapSet& m, const std::string& path, Colour colour) {
 }
 
 int run_maps(const MapsArgs& a) {
+#ifndef CLOTHBENCH_WITH_GL
+  if (a.renderer == "gl")
+    throw InputError(
+        "maps --renderer gl: this build has no OpenGL renderer (configure with -DCLOTHBENCH_WITH_GL=ON); "
+        "--renderer cpu draws the same maps");
+#endif
   // the body at rest or at one instant of an animation
   const BodyModel model = load_body(a.body);
   BodyFrame frame = model.rest();
@@ -105,7 +119,9 @@ void add_maps_command(CLI::App& app, Action& action) {
   cmd->add_option("body", args->body, "body file (any format assimp reads)")->required();
   cmd->add_option("--animation", args->animation, "animation name (default: the rest pose)");
   cmd->add_option("--at", args->at_s, "animation time [s]")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--renderer", args->renderer, "gl (OSMesa) or cpu")->check(CLI::IsMember({"gl", "cpu"}));
+  cmd->add_option("--renderer", args->renderer,
+                  std::string("gl (OSMesa; builds with CLOTHBENCH_WITH_GL) or cpu (default: ") + kDefaultRenderer + ")")
+      ->check(CLI::IsMember({"gl", "cpu"}));
   cmd->add_option("--size", args->size, "map size [pixels]")->check(CLI::Range(8, 8192));
   cmd->add_option("--png", args->png_dir, "output folder")->required();
   cmd->callback([&action, args] { action = [args] { return run_maps(*args); }; });

@@ -3,14 +3,12 @@
 #include <functional>
 
 #include "clothbench/config.h"
-#include "clothbench/sim/brute_collider.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/sim/brute_collider.hpp"
 
-// each backend's header exists only when its module was configured (CMake option on)
-#if defined(CLOTHBENCH_WITH_GL) && __has_include("clothbench/collide_is/image_space_collider.hpp")
+// the image-space colliders are built always (is-gl only with CLOTHBENCH_WITH_GL); each
+// object-space backend's header exists only when its module was configured (CMake option on)
 #include "clothbench/collide_is/image_space_collider.hpp"
-#define CLOTHBENCH_HAS_IS 1
-#endif
 #if defined(CLOTHBENCH_WITH_FCL) && __has_include("clothbench/collide_os/fcl_collider.hpp")
 #include "clothbench/collide_os/fcl_collider.hpp"
 #define CLOTHBENCH_HAS_FCL 1
@@ -34,13 +32,12 @@ struct Entry {
 std::vector<Entry> entries() {
   std::vector<Entry> e;
   const std::string is_desc = "image space: front/back depth, normal, velocity maps ";
-#ifdef CLOTHBENCH_HAS_IS
+#ifdef CLOTHBENCH_WITH_GL
   e.push_back({{"is-gl", is_desc + "rendered with OpenGL (OSMesa)", true, "CLOTHBENCH_WITH_GL"}, make_is_gl_collider});
-  e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", true, "CLOTHBENCH_WITH_GL"}, make_is_cpu_collider});
 #else
   e.push_back({{"is-gl", is_desc + "rendered with OpenGL (OSMesa)", false, "CLOTHBENCH_WITH_GL"}, {}});
-  e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", false, "CLOTHBENCH_WITH_GL"}, {}});
 #endif
+  e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", true, ""}, make_is_cpu_collider});
   const std::string fcl_desc = "object space: FCL OBBRSS tree, closest point per query, refit";
   const std::string embree_desc = "object space: Embree BVH, rtcPointQuery closest point, refit";
 #ifdef CLOTHBENCH_HAS_FCL

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "clothbench/config.h"
+#include "clothbench/io/data_root.hpp"
 
 namespace {
 
@@ -47,16 +48,21 @@ TEST_F(Cli, BadInputExitsTwoWithAMessage) {
   EXPECT_EQ(clothbench("run " + kScenes + "walking/tablecloth_sphere.toml --set solver.limit=fast", log), 2);
   EXPECT_NE(read(log).find("solver.limit"), std::string::npos);
   EXPECT_EQ(clothbench("run " + kScenes + "walking/tablecloth_sphere.toml --set bad", log), 2);
-  EXPECT_EQ(clothbench("run " + kScenes + "walking/tablecloth_sphere.toml --json /proc/nope/x.json --set body.move_s=0.01 --set stop.drape_max_s=0.01", log), 2);
+  EXPECT_EQ(clothbench("run " + kScenes +
+                           "walking/tablecloth_sphere.toml --json /proc/nope/x.json --set body.move_s=0.01 --set "
+                           "stop.drape_max_s=0.01",
+                       log),
+            2);
   EXPECT_EQ(clothbench("reproduce --only nope", log), 2);
   EXPECT_EQ(clothbench("compare " + (dir_ / "a.json").string() + " " + (dir_ / "b.json").string(), log), 2);
 }
 
 TEST_F(Cli, RunWritesTheResultFields) {
   const std::string json = (dir_ / "r.json").string();
-  ASSERT_EQ(clothbench("run --quiet " + kScenes + "walking/tablecloth_sphere.toml --set garment.vertices=225 "
-                       "--set body.move_s=0.05 --set stop.drape_max_s=0.1 --json " + json + " --png " +
-                       (dir_ / "r.png").string()),
+  ASSERT_EQ(clothbench("run --quiet " + kScenes +
+                       "walking/tablecloth_sphere.toml --set garment.vertices=225 "
+                       "--set body.move_s=0.05 --set stop.drape_max_s=0.1 --json " +
+                       json + " --png " + (dir_ / "r.png").string()),
             0);
   const auto doc = nlohmann::json::parse(read(json));
   ASSERT_EQ(doc["benchmarks"].size(), 1u);
@@ -71,10 +77,27 @@ TEST_F(Cli, RunWritesTheResultFields) {
   EXPECT_FALSE(fs::exists(json + ".tmp"));
 }
 
+// every build draws maps with the CPU rasteriser; --renderer gl without CLOTHBENCH_WITH_GL names the option
+TEST_F(Cli, MapsWithoutOpenGlUseTheCpuRendererAndNameTheMissingOption) {
+  if (!fs::exists(clothbench::kDebianHumanBody)) GTEST_SKIP() << clothbench::kDebianHumanBody << " missing";
+  const std::string log = (dir_ / "log").string();
+  const std::string maps = "maps " + std::string(clothbench::kDebianHumanBody) + " --size 32 --png " + dir_.string();
+  EXPECT_EQ(clothbench(maps + " --renderer cpu", log), 0) << read(log);
+  EXPECT_TRUE(fs::exists(dir_ / "human_rest_depth.png"));
+#ifdef CLOTHBENCH_WITH_GL
+  GTEST_SKIP() << "built with CLOTHBENCH_WITH_GL";
+#else
+  EXPECT_EQ(clothbench(maps, log), 0) << read(log);  // the default renderer is cpu here
+  EXPECT_NE(read(log).find("cpu maps"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench(maps + " --renderer gl", log), 2);
+  EXPECT_NE(read(log).find("-DCLOTHBENCH_WITH_GL=ON"), std::string::npos) << read(log);
+#endif
+}
+
 TEST_F(Cli, CompareFlagsARegression) {
   const auto write = [&](const std::string& name, double t) {
-    std::ofstream((dir_ / name).string()) << nlohmann::json{{"context", {}},
-                                                            {"benchmarks", {{{"name", "a/b"}, {"real_time", t}}}}}.dump();
+    std::ofstream((dir_ / name).string())
+        << nlohmann::json{{"context", {}}, {"benchmarks", {{{"name", "a/b"}, {"real_time", t}}}}}.dump();
   };
   write("old.json", 1.0);
   write("same.json", 1.05);

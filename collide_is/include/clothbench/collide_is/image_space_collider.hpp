@@ -29,10 +29,10 @@ enum class DepthTest {
 ///   normal and velocity from the map whose surface is nearer (z beyond the local body centre
 ///   (zf + zb) / 2 takes the front map, the papers' choice by the sign of z).
 /// Side-layer hits (dressing 5.4) report depth >= 0. Depth test kTangentPlane. Throws
-/// std::runtime_error when no GL context can be created.
+/// std::runtime_error when no GL context can be created or the build lacks CLOTHBENCH_WITH_GL.
 std::unique_ptr<Collider> make_is_gl_collider(const ColliderOptions& options);
 
-/// The same collider with maps from the CPU rasteriser; name() "is-cpu".
+/// The same collider with maps from the CPU rasteriser; name() "is-cpu". In every build.
 std::unique_ptr<Collider> make_is_cpu_collider(const ColliderOptions& options);
 
 /// Either collider over an explicit renderer ("gl" or "cpu"); the MapSet stays readable for

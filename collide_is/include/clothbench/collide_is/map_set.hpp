@@ -117,7 +117,7 @@ class MapRenderer {
 /// OpenGL via OSMesa (llvmpipe): one off-screen context with its own small client buffer,
 /// an FBO with two colour targets (normal, velocity; RGBA32F or RGBA8) and a depth target,
 /// read back with glReadPixels. Throws std::runtime_error when no context can be created or a
-/// shader does not compile.
+/// shader does not compile, and in builds without CLOTHBENCH_WITH_GL (message naming the option).
 std::unique_ptr<MapRenderer> make_gl_map_renderer();
 
 /// The CPU rasteriser: both views in one pass over the triangles, reproducing llvmpipe (Mesa 22.3):
@@ -132,7 +132,7 @@ std::unique_ptr<MapRenderer> make_cpu_map_renderer();
 /// One-shot maps of a body: frame from its bounding box and `options` (map_size, fit_extent,
 /// float_maps, max_speed, side_layer), velocity maps when body.moving. `renderer` is "gl" or
 /// "cpu". Throws std::invalid_argument for another name or a malformed body, std::runtime_error
-/// when GL is asked for and no context can be created.
+/// when GL is asked for and no context can be created or the build lacks CLOTHBENCH_WITH_GL.
 MapSet render_maps(const BodyFrame& body, std::string_view renderer, const ColliderOptions& options);
 
 }  // namespace clothbench
