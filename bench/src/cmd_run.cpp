@@ -34,17 +34,19 @@ void print_summary(const RunResult& r) {
   std::printf("  per iteration %.3f ms (CD&R %.3f, CS %.3f)\n", r.ms_per_iteration(), r.cdr_ms_per_iteration(),
               r.cs_ms_per_iteration());
   if (r.frames > 0)
-    std::printf("  %ld frames, %.0f steps per frame, %.2f frames/s (skinning %.2f ms, collider update %.2f ms per frame)\n",
-                r.frames, r.steps_per_frame, 1e3 * double(r.frames) / r.animate.wall_ms,
-                r.skinning_ms / double(r.frames), r.collider_update_ms / double(r.frames));
+    std::printf(
+        "  %ld frames, %.0f steps per frame, %.2f frames/s (skinning %.2f ms, collider update %.2f ms per frame)\n",
+        r.frames, r.steps_per_frame, 1e3 * double(r.frames) / r.animate.wall_ms, r.skinning_ms / double(r.frames),
+        r.collider_update_ms / double(r.frames));
   if (r.divergence) {
     std::printf("  DIVERGED at iteration %ld (%s), vertex %d: %s\n", r.divergence->iteration,
                 to_string(r.divergence->phase), r.divergence->vertex, r.divergence->reason.c_str());
     return;
   }
-  std::printf("  accuracy: %.2f %% inside, depth max %.2f mm, p95 %.2f mm; seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
-              r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.seam_gap_max_mm,
-              100 * r.strain_max, 100 * r.strain_p99);
+  std::printf(
+      "  accuracy: %.2f %% inside, depth max %.2f mm, p95 %.2f mm; seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
+      r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.seam_gap_max_mm, 100 * r.strain_max,
+      100 * r.strain_p99);
   std::printf("  converged %s\n", r.converged ? "yes" : "no");
 }
 
@@ -56,11 +58,16 @@ int run(const RunArgs& a) {
   const RunResult r = run_scene(scene, options);
   print_summary(r);
   if (!a.json.empty())
-    write_text_file(a.json, result_document(nlohmann::json::array({result_row(r, scene.name + "/" + scene.collider)})).dump(2) + "\n");
+    write_text_file(
+        a.json,
+        result_document(nlohmann::json::array({result_row(r, scene.name + "/" + scene.collider)})).dump(2) + "\n");
   if (!a.png.empty()) {
     std::vector<Image> views;
-    for (View v : {View::kFront, View::kSide, View::kBack}) views.push_back(render_dressed(r.final_body, r.mesh, 480, v));
+    for (View v : {View::kFront, View::kSide, View::kBack})
+      views.push_back(render_dressed(r.final_body, r.mesh, 480, v));
     side_by_side(views).write_png(a.png);
+    std::printf("  picture %s (front, side, back) drawn by %s\n", a.png.c_str(),
+                picture_renderer_name(default_picture_renderer()).c_str());
   }
   if (!a.gltf.empty()) export_dressed(a.gltf, r.final_body, r.mesh);
   return r.divergence ? 3 : 0;

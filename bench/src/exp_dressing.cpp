@@ -29,10 +29,21 @@ std::string accuracy_cells(const RunResult& r) {
          num(r.seam_gap_max_mm, 1) + " | " + num(100 * r.strain_max, 1);
 }
 
-void picture(ExperimentContext& ctx, const RunResult& r, const std::string& name) {
+// pictures/NAME.png: front, side and back of a run's end state; returns a markdown link to it
+std::string picture(ExperimentContext& ctx, const RunResult& r, const std::string& name, const std::string& label) {
   std::vector<Image> views;
   for (View v : {View::kFront, View::kSide, View::kBack}) views.push_back(render_dressed(r.final_body, r.mesh, 360, v));
   side_by_side(views).write_png(ctx.path("pictures/" + name + ".png"));
+  return "[" + label + "](pictures/" + name + ".png)";
+}
+
+// the line under a table that lists its pictures and names the renderer that drew them (empty without pictures)
+std::string pictures_line(const std::vector<std::string>& links, const std::string& extra = "") {
+  if (links.empty()) return "";
+  std::string line = "\nPictures of the is-cpu runs' end states (front, side, back), drawn by " +
+                     picture_renderer_name(default_picture_renderer()) + ": ";
+  for (std::size_t i = 0; i < links.size(); ++i) line += (i ? ", " : "") + links[i];
+  return line + extra + ".\n";
 }
 
 struct T1Garment {
@@ -58,7 +69,10 @@ void dressing_t1(ExperimentContext& ctx) {
                    "inside [%]", "depth max [mm]", "crossings (%)", "seam gap [mm]", "strain max [%]", "converged"});
   std::ostringstream ratios;
   ratios << "\n## CD&R time per iteration, image space / object space (ours, one run each)\n\n";
-  MarkdownTable rt({"garment", "image space", "object space", "ratio IS/OS", "OS is slower by", "paper IS/OS (walking Table 1)"});
+  MarkdownTable rt(
+      {"garment", "image space", "object space", "ratio IS/OS", "OS is slower by", "paper IS/OS (walking Table 1)"});
+  std::vector<std::string> pictures;
+  std::string gltf;
   for (const auto& g : kT1) {
     for (const auto& c : ctx.colliders(kAll)) {
       const RunResult& r = t1_run(ctx, g, c);
@@ -68,9 +82,11 @@ void dressing_t1(ExperimentContext& ctx) {
              num(p.total_s, 1), num(p.ms_per_iteration, 1), num(r.ms_per_iteration() / p.ms_per_iteration, 3),
              accuracy_cells(r), r.converged ? "yes" : "no"});
       ctx.add_row(result_row(r, std::string("dressing-t1/") + g.product + "/" + c));
-      if (c == "is-cpu") picture(ctx, r, std::string("dressing-t1-") + g.product);
-      if (c == "is-cpu" && g.product == std::string("dress"))
+      if (c == "is-cpu") pictures.push_back(picture(ctx, r, std::string("dressing-t1-") + g.product, g.product));
+      if (c == "is-cpu" && g.product == std::string("dress")) {
         export_dressed(ctx.path("pictures/dressing-t1-dress.glb"), r.final_body, r.mesh);
+        gltf = "; the dress as binary glTF: [dressing-t1-dress.glb](pictures/dressing-t1-dress.glb)";
+      }
     }
     const auto& wp = paper::kWalkingT1[g.product == std::string("shirt") ? 0 : 2];
     const auto& wo = paper::kWalkingT1[g.product == std::string("shirt") ? 1 : 3];
@@ -88,13 +104,13 @@ void dressing_t1(ExperimentContext& ctx) {
           "differ from the paper's: we step at dt from Eq. 4 (see the JSON's dt_ms), the paper does not state its dt. "
           "Accuracy from the exact oracle at the end state; crossings = structural springs whose segment passes "
           "through a body triangle (the paper's holes, section 7), with their share of the structural springs.\n\n"
-       << t.str() << ratios.str();
+       << t.str() << pictures_line(pictures, gltf) << ratios.str();
   ctx.write("dressing-t1", "Dressing paper Table 1: image space vs object space", body.str());
 }
 
 void walking_t1(ExperimentContext& ctx) {
-  MarkdownTable t({"garment", "collider", "vertices", "ms/iteration", "CD&R ms", "CS ms", "CD&R %", "CS %",
-                   "paper", "paper ms/it", "paper CD&R ms", "paper CS ms", "paper CD&R %", "paper CS %", "inside [%]"});
+  MarkdownTable t({"garment", "collider", "vertices", "ms/iteration", "CD&R ms", "CS ms", "CD&R %", "CS %", "paper",
+                   "paper ms/it", "paper CD&R ms", "paper CS ms", "paper CD&R %", "paper CS %", "inside [%]"});
   for (const auto& g : kT1)
     for (const auto& c : ctx.colliders(kAll)) {
       const RunResult& r = t1_run(ctx, g, c);
@@ -103,13 +119,15 @@ void walking_t1(ExperimentContext& ctx) {
       t.row({g.product, c, std::to_string(r.vertices), num(total, 3), num(r.cdr_ms_per_iteration(), 3),
              num(r.cs_ms_per_iteration(), 3), num(100 * r.cdr_ms_per_iteration() / total, 1),
              num(100 * r.cs_ms_per_iteration() / total, 1), p.method, num(p.ms_per_iteration, 1), num(p.cdr_ms, 1),
-             num(p.cs_ms, 1), num(p.cdr_pct, 1), num(p.cs_pct, 1), r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2)});
+             num(p.cs_ms, 1), num(p.cdr_pct, 1), num(p.cs_pct, 1),
+             r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2)});
       ctx.add_row(result_row(r, std::string("walking-t1/") + g.product + "/" + c));
     }
   ctx.write("walking-t1", "Walking paper Table 1: CD&R vs CS time",
             "The runs of dressing-t1 (static body), split into collision detection and response (CD&R: collider "
             "query + response) and cloth simulation (CS: forces, integration, limits, seaming), as the walking "
-            "paper's Table 1. Map rendering / BVH building is set-up and excluded, as in the paper.\n\n" + t.str());
+            "paper's Table 1. Map rendering / BVH building is set-up and excluded, as in the paper.\n\n" +
+                t.str());
 }
 
 void dressing_t2(ExperimentContext& ctx) {
@@ -125,16 +143,19 @@ void dressing_t2(ExperimentContext& ctx) {
   MarkdownTable t({"garment", "collider", "vertices", "query points", "iterations", "total [s]", "ms/iteration",
                    "paper vertices", "paper iterations", "paper total [s]", "paper ms/it", "inside [%]",
                    "depth max [mm]", "crossings (%)", "seam gap [mm]", "strain max [%]", "converged"});
+  std::vector<std::string> pictures;
   for (std::size_t i = 0; i < 4; ++i) {
     const auto& g = garments[i];
     for (const auto& c : ctx.colliders({"is-gl", "is-cpu"})) {
-      const RunResult& r = ctx.run(g.scene, c, with_quick(ctx, {"garment.vertices=" + std::to_string(g.vertices), "solver.face_queries=true"}));
+      const RunResult& r = ctx.run(
+          g.scene, c, with_quick(ctx, {"garment.vertices=" + std::to_string(g.vertices), "solver.face_queries=true"}));
       const auto& p = paper::kDressingT2[i];
       t.row({g.product, c, std::to_string(r.vertices), std::to_string(r.query_points), std::to_string(r.iterations()),
-             num(r.total_s(), 2), num(r.ms_per_iteration(), 3), std::to_string(p.vertices), std::to_string(p.iterations),
-             num(p.total_s, 3), num(p.ms_per_iteration, 1), accuracy_cells(r), r.converged ? "yes" : "no"});
+             num(r.total_s(), 2), num(r.ms_per_iteration(), 3), std::to_string(p.vertices),
+             std::to_string(p.iterations), num(p.total_s, 3), num(p.ms_per_iteration, 1), accuracy_cells(r),
+             r.converged ? "yes" : "no"});
       ctx.add_row(result_row(r, std::string("dressing-t2/") + g.product + "/" + c));
-      if (c == "is-cpu") picture(ctx, r, std::string("dressing-t2-") + g.product);
+      if (c == "is-cpu") pictures.push_back(picture(ctx, r, std::string("dressing-t2-") + g.product, g.product));
     }
   }
   ctx.write("dressing-t2", "Dressing paper Table 2: minimum vertices with face-body collisions",
@@ -142,7 +163,8 @@ void dressing_t2(ExperimentContext& ctx) {
             "its 4 panels at our meshing) with the image-space method and face-body queries (quad midpoints are "
             "queried and their response is spread to the quad's corners, dressing section 6). Crossings = structural "
             "springs through a body triangle (the holes fewer vertices produce, section 7), share of them in brackets."
-            "\n\n" + t.str());
+            "\n\n" +
+                t.str() + pictures_line(pictures));
 }
 
 void dressing_f8(ExperimentContext& ctx) {
@@ -175,10 +197,11 @@ void dressing_f8(ExperimentContext& ctx) {
                             {"logy", true},
                             {"series", series}});
   ctx.write("dressing-f8", "Dressing paper Fig. 8: time per iteration vs cloth vertices",
-            "The dress meshed at " + std::to_string(sizes.size()) + " sizes, placed and draped (gravity, no sewing) for " +
-                std::to_string(iterations) + " iterations; ms per iteration = CD&R + CS. The paper shows a straight "
-                "line (O(n)) for its IS method and gives no numbers; a linear fit per collider:\n\n" + fit.str() +
-                "\n![chart](dressing-f8.png)\n\n" + t.str());
+            "The dress meshed at " + std::to_string(sizes.size()) +
+                " sizes, placed and draped (gravity, no sewing) for " + std::to_string(iterations) +
+                " iterations; ms per iteration = CD&R + CS. The paper shows a straight "
+                "line (O(n)) for its IS method and gives no numbers; a linear fit per collider:\n\n" +
+                fit.str() + "\n![chart](dressing-f8.png)\n\n" + t.str());
 }
 
 }  // namespace

@@ -58,12 +58,15 @@ TEST_F(Cli, BadInputExitsTwoWithAMessage) {
 }
 
 TEST_F(Cli, RunWritesTheResultFields) {
-  const std::string json = (dir_ / "r.json").string();
+  const std::string json = (dir_ / "r.json").string(), log = (dir_ / "log").string();
   ASSERT_EQ(clothbench("run --quiet " + kScenes +
-                       "walking/tablecloth_sphere.toml --set garment.vertices=225 "
-                       "--set body.move_s=0.05 --set stop.drape_max_s=0.1 --json " +
-                       json + " --png " + (dir_ / "r.png").string()),
+                           "walking/tablecloth_sphere.toml --set garment.vertices=225 "
+                           "--set body.move_s=0.05 --set stop.drape_max_s=0.1 --json " +
+                           json + " --png " + (dir_ / "r.png").string(),
+                       log),
             0);
+  // the summary names the renderer of the picture
+  EXPECT_NE(read(log).find(") drawn by "), std::string::npos) << read(log);
   const auto doc = nlohmann::json::parse(read(json));
   ASSERT_EQ(doc["benchmarks"].size(), 1u);
   const auto& row = doc["benchmarks"][0];
