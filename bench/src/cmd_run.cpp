@@ -44,9 +44,10 @@ void print_summary(const RunResult& r) {
     return;
   }
   std::printf(
-      "  accuracy: %.2f %% inside, depth max %.2f mm, p95 %.2f mm; seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
-      r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.seam_gap_max_mm, 100 * r.strain_max,
-      100 * r.strain_p99);
+      "  accuracy: %.2f %% inside, depth max %.2f mm, p95 %.2f mm; crossings %zu (%.2f %% of structural springs); "
+      "seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
+      r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.accuracy.crossings,
+      r.accuracy.crossings_pct, r.seam_gap_max_mm, 100 * r.strain_max, 100 * r.strain_p99);
   std::printf("  converged %s\n", r.converged ? "yes" : "no");
 }
 

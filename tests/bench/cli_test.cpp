@@ -65,8 +65,9 @@ TEST_F(Cli, RunWritesTheResultFields) {
                            json + " --png " + (dir_ / "r.png").string(),
                        log),
             0);
-  // the summary names the renderer of the picture
+  // the summary names the renderer of the picture and counts the crossings
   EXPECT_NE(read(log).find(") drawn by "), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find(" % of structural springs); seam gap"), std::string::npos) << read(log);
   const auto doc = nlohmann::json::parse(read(json));
   ASSERT_EQ(doc["benchmarks"].size(), 1u);
   const auto& row = doc["benchmarks"][0];
