@@ -306,7 +306,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   r.divergence = sim->divergence();
   r.threads = collider->stats().threads;
   r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&
-                r.drape.reached && (!source.moves() || r.animate.reached);
+                (r.drape.reached || scene.stop.drape_max_s == 0) && (!source.moves() || r.animate.reached);
   r.final_body = frame;
   if (!r.divergence) measure(scene, *sim, r);
   r.mesh = sim->mesh();

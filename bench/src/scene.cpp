@@ -164,7 +164,6 @@ void read_solver(Section s, SolverParams& p) {
   s.vec3("gravity", p.gravity);
   s.choice("seam_method", [&](const std::string& v) { p.seam_method = parse_seam_method(v); });
   s.number("seam_stiffness", p.seam_stiffness, 0, 1e7);
-  s.number("seam_period", p.seam_period, 1e-4, 100);
   s.number("seam_reach", p.seam_reach, 1e-4, 10);
   s.number("seam_speed", p.seam_speed, 1e-4, 100);
   s.number("attraction_speed", p.attraction_speed, 0, 100);

@@ -41,8 +41,6 @@ Vec3 collision_response(const Vec3& v, const Contact& c, Real friction, Real ref
 
 namespace {
 
-Real reduced_mass(Real a, Real b) { return a * b / (a + b); }
-
 // throws naming the parameter unless lo < value < hi (or <= when inclusive)
 void require(bool ok, const char* name, const std::string& rule, double value) {
   if (!ok || !std::isfinite(value))
@@ -64,7 +62,6 @@ void validate(const Material& m, const SolverParams& p) {
   require(p.limit_passes >= 1, "limit_passes", ">= 1", p.limit_passes);
   require(p.gravity.allFinite(), "gravity", "finite", p.gravity.norm());
   require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m (0 = automatic)", p.seam_stiffness);
-  require(p.seam_period > 0, "seam_period", "> 0 s", p.seam_period);
   require(p.seam_reach > 0, "seam_reach", "> 0 m", p.seam_reach);
   require(p.seam_speed > 0, "seam_speed", "> 0 m/s", p.seam_speed);
   require(p.attraction_speed > 0, "attraction_speed", "> 0 m/s", p.attraction_speed);
@@ -89,16 +86,11 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   k_.resize(ns);
   for (Eigen::Index s = 0; s < ns; ++s) k_[s] = factor * k_kind[static_cast<int>(mesh_.kind[s])];
   m_ = mesh_.vertex_area * material_.density;
-  // elastic seams: a zero-length spring per pair, given, or from the pair's reduced mass
-  // mu = m_a m_b / (m_a + m_b): k = mu (2 pi / seam_period)^2, whatever the resolution and however
-  // small a share of a cell a vertex on the outline has
-  const Eigen::Index np = mesh_.seam_pairs.cols();
-  const Real omega = Real(2 * M_PI) / params_.seam_period;
-  seam_k_.resize(np);
-  for (Eigen::Index p = 0; p < np; ++p)
-    seam_k_[p] = params_.seam_stiffness > 0
-                     ? params_.seam_stiffness
-                     : reduced_mass(m_[mesh_.seam_pairs(0, p)], m_[mesh_.seam_pairs(1, p)]) * omega * omega;
+  // elastic seams: a zero-length spring per pair, given, or as stiff as the structural springs (the
+  // cloth's own scale at any resolution; a sliver vertex on an outline is no more at risk from it
+  // than from its grid springs, and seam_reach and seam_speed bound the pull from afar)
+  seam_k_ = Scalars::Constant(mesh_.seam_pairs.cols(),
+                              params_.seam_stiffness > 0 ? params_.seam_stiffness : factor * material_.k_structural);
   inv_m_ = m_.cwiseInverse();
   x_ = mesh_.positions;
   v_ = Points3::Zero(3, nv);

@@ -53,9 +53,7 @@ struct SolverParams {
   bool reaction_force = false;           ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
-  Real seam_stiffness = 0;       ///< elastic seam springs (rest length 0) [N/m]; 0 = automatic from seam_period
-  Real seam_period = 0.004f;     ///< automatic seam stiffness: every pair k = reduced mass (2 pi / seam_period)^2 [s]:
-                                 ///< a pair on its own closes in a quarter of it, whatever the resolution
+  Real seam_stiffness = 0;       ///< elastic seam springs (rest length 0) [N/m]; 0 = as the structural springs
   Real seam_reach = 0.005f;      ///< elastic seams pull with k |d| up to this gap and no harder beyond it [m]
   Real seam_speed = 2.f;         ///< partners of an elastic seam approach each other no faster than this [m/s]
   Real attraction_speed = 0.5f;  ///< c_attraction of Durupinar Eq. 1 [m/s]
