@@ -71,10 +71,11 @@ void walking_t2(ExperimentContext& ctx) {
     const char* scene;
     int vertices;
   };
-  const G garments[] = {{"skirt", "walking/skirt.toml", 672}, {"dress with sleeves", "walking/dress_sleeves.toml", 2300}};
-  MarkdownTable t({"garment", "collider", "vertices", "frames", "steps/frame", "s/frame", "frames/s", "skinning ms/frame",
-                   "maps or refit ms/frame", "cloth ms/frame (CD&R + CS)", "paper s/frame", "paper frames/s",
-                   "inside [%] end", "strain max [%] (animation)"});
+  const G garments[] = {{"skirt", "walking/skirt.toml", 672},
+                        {"dress with sleeves", "walking/dress_sleeves.toml", 2300}};
+  MarkdownTable t({"garment", "collider", "vertices", "frames", "steps/frame", "s/frame", "frames/s",
+                   "skinning ms/frame", "maps or refit ms/frame", "cloth ms/frame (CD&R + CS)", "paper s/frame",
+                   "paper frames/s", "inside [%] end", "strain max [%] (animation)"});
   std::string media;  // where the pictures and videos went
   std::vector<std::string> sets_quick;
   if (ctx.quick()) sets_quick = {"body.start_s=0.1", "body.end_s=0.2", "stop.max_iterations=60"};
@@ -110,25 +111,27 @@ void walking_t2(ExperimentContext& ctx) {
         const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"),
                                       scene_fps(ctx, g.scene));
         media += "- " + std::string(g.product) + ": [end state](" + stem + ".png), " + std::to_string(sequence.size()) +
-                 " frames in `" + stem + "/`" + (video ? ", [video](" + stem + ".mp4)" : std::string(", no video (ffmpeg absent)")) + "\n";
+                 " frames in `" + stem + "/`" +
+                 (video ? ", [video](" + stem + ".mp4)" : std::string(", no video (ffmpeg absent)")) + "\n";
         std::vector<Image> views;
         for (View v : {View::kFront, View::kSide}) views.push_back(render_dressed(r.final_body, r.mesh, 360, v));
         side_by_side(views).write_png(ctx.path(stem + ".png"));
       }
     }
   }
-  ctx.write("walking-t2", "Walking paper Table 2: animation speed on the walking body",
-            "Garments dressed on the bind pose (t = 0, sew + drape with `collider.dress_with`), then animated on "
-            "`walk_07_01` walking in place; the body frames are evaluated at `body.fps` frames per second of "
-            "animation time and the cloth takes `steps/frame` steps of dt per frame. s/frame = wall time of the "
-            "animation phase per frame: skinning (LBS, our analogue of the paper's reading the body file), map "
-            "re-render or BVH refit, and cloth (CD&R + CS). The paper's figures include rendering the scene on "
-            "screen, ours do not.\n\n" + t.str() +
-                (media.empty() ? std::string()
-                               : "\nPictures of the is-cpu runs (front view; " +
-                                     picture_renderer_name(default_picture_renderer()) +
-                                     "; frames are copied during the run and drawn after it, outside s/frame):\n\n" +
-                                     media));
+  ctx.write(
+      "walking-t2", "Walking paper Table 2: animation speed on the walking body",
+      "Garments dressed on the bind pose (t = 0, sew + drape with `collider.dress_with`), then animated on "
+      "`walk_07_01` walking in place; the body frames are evaluated at `body.fps` frames per second of "
+      "animation time and the cloth takes `steps/frame` steps of dt per frame. s/frame = wall time of the "
+      "animation phase per frame: skinning (LBS, our analogue of the paper's reading the body file), map "
+      "re-render or BVH refit, and cloth (CD&R + CS). The paper's figures include rendering the scene on "
+      "screen, ours do not.\n\n" +
+          t.str() +
+          (media.empty()
+               ? std::string()
+               : "\nPictures of the is-cpu runs (front view; " + picture_renderer_name(default_picture_renderer()) +
+                     "; frames are copied during the run and drawn after it, outside s/frame):\n\n" + media));
 }
 
 // how far the cloth's centre trails the sphere's centre along the motion [m]
@@ -140,8 +143,7 @@ double lag(const RunResult& r, const Vec3& direction) {
 
 void walking_f8(ExperimentContext& ctx) {
   MarkdownTable t({"limit", "threshold", "strain max during motion [%]", "strain max end [%]", "strain p99 end [%]",
-                   "lag behind the sphere [cm]",
-                   "inside [%] end", "status"});
+                   "lag behind the sphere [cm]", "inside [%] end", "status"});
   std::vector<Image> pictures;
   for (const char* limit : {"none", "velocity", "directional"}) {
     std::vector<std::string> sets{std::string("solver.limit=") + limit};
@@ -151,19 +153,23 @@ void walking_f8(ExperimentContext& ctx) {
                                             r.divergence->reason + ")"
                                       : "ok";
     const auto end_value = [&](double v) { return r.divergence ? std::string("-") : num(100 * v, 1); };
-    t.row({limit, "5 %", r.frames ? num(100 * r.animate_strain_max, 1) : "-", end_value(r.strain_max), end_value(r.strain_p99),
-           r.divergence ? "-" : num(100 * lag(r, Vec3::UnitX()), 1),
+    t.row({limit, "5 %", r.frames ? num(100 * r.animate_strain_max, 1) : "-", end_value(r.strain_max),
+           end_value(r.strain_p99), r.divergence ? "-" : num(100 * lag(r, Vec3::UnitX()), 1),
            r.divergence ? "-" : num(r.accuracy.inside_pct, 2), status});
-    ctx.add_row(result_row(r, std::string("walking-f8/tablecloth/") + limit));
+    nlohmann::json row = result_row(r, std::string("walking-f8/tablecloth/") + limit);
+    if (r.frames) row["animate_strain_max"] = r.animate_strain_max;
+    if (!r.divergence) row["lag_cm"] = 100 * lag(r, Vec3::UnitX());
+    ctx.add_row(row);
     pictures.push_back(render_dressed(r.final_body, r.mesh, 300, View::kFront));
   }
   side_by_side(pictures).write_png(ctx.path("pictures/walking-f8.png"));
-  ctx.write("walking-f8", "Walking paper Fig. 8: tablecloth on a moving sphere",
-            "A square tablecloth draped on a sphere that then moves along +x (scenes/walking/tablecloth_sphere.toml; "
-            "analytic sphere collider, so the comparison isolates the super-elasticity limit). Limits: none, velocity "
-            "averaging (walking Eq. 5), directional modification (walking Eq. 6), threshold 5 %. Lag = distance from the "
-            "cloth's centroid to the sphere's centre along the motion at the end.\n\n" + t.str() +
-                "\n![no limit, velocity, directional](pictures/walking-f8.png)\n");
+  ctx.write(
+      "walking-f8", "Walking paper Fig. 8: tablecloth on a moving sphere",
+      "A square tablecloth draped on a sphere that then moves along +x (scenes/walking/tablecloth_sphere.toml; "
+      "analytic sphere collider, so the comparison isolates the super-elasticity limit). Limits: none, velocity "
+      "averaging (walking Eq. 5), directional modification (walking Eq. 6), threshold 5 %. Lag = distance from the "
+      "cloth's centroid to the sphere's centre along the motion at the end.\n\n" +
+          t.str() + "\n![no limit, velocity, directional](pictures/walking-f8.png)\n");
 }
 
 }  // namespace

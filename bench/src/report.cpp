@@ -1,6 +1,7 @@
 // Result rows, machine context and atomic writes.
 #include "report.hpp"
 
+#include <unistd.h>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -10,7 +11,6 @@
 #include <memory>
 #include <sstream>
 #include <thread>
-#include <unistd.h>
 
 #include "clothbench/config.h"
 #include "clothbench/io/errors.hpp"
@@ -44,8 +44,10 @@ nlohmann::json machine_context() {
   const std::time_t now = std::time(nullptr);
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  const std::string sha = command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) + "' rev-parse --short HEAD 2>/dev/null");
-  const std::string dirty = command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) + "' status --porcelain --untracked-files=no 2>/dev/null");
+  const std::string sha =
+      command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) + "' rev-parse --short HEAD 2>/dev/null");
+  const std::string dirty = command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) +
+                                           "' status --porcelain --untracked-files=no 2>/dev/null");
   return {{"date", date},
           {"host_name", host},
           {"executable", "clothbench"},
@@ -77,6 +79,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"dt_bound_ms", 1e3 * r.dt_bound_s},
                      {"dt_spectral_ms", 1e3 * r.dt_spectral_s},
                      {"sew_iterations", r.sew.iterations},
+                     {"sewn", r.sew.reached ? 1 : 0},
                      {"drape_iterations", r.drape.iterations},
                      {"threads", r.threads},
                      {"converged", r.converged ? 1 : 0},
