@@ -169,7 +169,8 @@ void walking_f8(ExperimentContext& ctx) {
       "analytic sphere collider, so the comparison isolates the super-elasticity limit). Limits: none, velocity "
       "averaging (walking Eq. 5), directional modification (walking Eq. 6), threshold 5 %. Lag = distance from the "
       "cloth's centroid to the sphere's centre along the motion at the end.\n\n" +
-          t.str() + "\n![no limit, velocity, directional](pictures/walking-f8.png)\n");
+          t.str() + "\n![no limit, velocity, directional](pictures/walking-f8.png)\n\nPictures drawn by " +
+          picture_renderer_name(default_picture_renderer()) + ".\n");
 }
 
 }  // namespace
