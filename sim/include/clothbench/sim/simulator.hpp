@@ -98,8 +98,9 @@ Vec3 collision_response(const Vec3& v, const Contact& contact, Real friction, Re
 /// ends the step at exactly the threshold length; kVelocityZero ignores it). Other limits return
 /// (va, vb) unchanged. The Simulator adds one rule of ours to kDirectional: a rear point that is
 /// held (attached, in contact with the body, or already following a held point this iteration)
-/// cannot catch up, so the front follows it instead; taken literally the rule diverges on a
-/// hanging cloth (measured in tests/sim).
+/// cannot catch up, so the front follows it instead. Taken literally (without both rules of ours)
+/// the rule diverged on the hanging square of tests/sim and on the moving-sphere tablecloth when we
+/// tried it; no test keeps the literal variant.
 std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1, Real wb = 1,
                                              Real target = 0);
 
