@@ -281,7 +281,9 @@ void Simulator::respond() {
     if (c.hit && inv_m_[i] > 0) col(v_, i) = resolve(v_.col(i), c);
   }
   if (!params_.face_queries) return;
-  // face-body: the quad midpoint's response goes to its four vertices, averaged (dressing section 6)
+  // face-body: the quad midpoint's response goes to its four vertices, averaged (dressing section 6),
+  // as the change it makes to the midpoint's velocity: the vertices keep their motion relative to
+  // each other (a seam closing across a quad is not stopped by it)
   face_sum.assign(static_cast<std::size_t>(nv), Vec3::Zero());
   face_count.assign(static_cast<std::size_t>(nv), 0);
   for (Eigen::Index q = 0; q < mesh_.quads.cols(); ++q) {
@@ -289,15 +291,15 @@ void Simulator::respond() {
     if (!c.hit) continue;
     Vec3 vq = Vec3::Zero();
     for (int k = 0; k < 4; ++k) vq += 0.25f * v_.col(mesh_.quads(k, q));
-    const Vec3 r = resolve(vq, c);
+    const Vec3 dv = resolve(vq, c) - vq;
     for (int k = 0; k < 4; ++k) {
-      face_sum[static_cast<std::size_t>(mesh_.quads(k, q))] += r;
+      face_sum[static_cast<std::size_t>(mesh_.quads(k, q))] += dv;
       ++face_count[static_cast<std::size_t>(mesh_.quads(k, q))];
     }
   }
   for (Eigen::Index i = 0; i < nv; ++i) {
     const auto n = face_count[static_cast<std::size_t>(i)];
-    if (n && inv_m_[i] > 0) col(v_, i) = face_sum[static_cast<std::size_t>(i)] / Real(n);
+    if (n && inv_m_[i] > 0) col(v_, i) += face_sum[static_cast<std::size_t>(i)] / Real(n);
   }
 }
 

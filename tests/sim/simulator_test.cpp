@@ -391,6 +391,31 @@ TEST(LimitStretchVelocity, CatchingUpNeverAddsKineticEnergy) {
   EXPECT_NEAR(b3 - a3, 0.3f, 1e-6);
 }
 
+TEST(Simulator, FaceQueryResponseKeepsTheVerticesRelativeMotion) {
+  // one 20 cm quad over the top of a 1 m sphere: its midpoint is 1 mm above the surface (a contact),
+  // its corners 2 cm (none). The midpoint's response changes the quad's common motion only: two
+  // corners sliding towards each other keep closing.
+  Material m;
+  m.k_structural = m.k_shear = m.k_flexion = 1e-6f;
+  m.damping = 0;
+  ClothMesh quad = make_grid_cloth(2, 2, 0.2f, Vec3(-0.1f, 1.001f, -0.1f), Vec3::UnitX(), Vec3::UnitZ());
+  SolverParams p;
+  p.limit = Limit::kNone;
+  p.face_queries = true;
+  p.dt = 1e-5f;
+  Simulator sim(quad, m, p);
+  SphereCollider sphere(Vec3::Zero(), 1.0f);
+  sim.set_collider(&sphere);
+  sim.set_phase(Phase::kSew);  // no gravity
+  sim.velocities().col(0) = Vec3(1, -0.1f, 0);
+  sim.velocities().col(1) = Vec3(-1, -0.1f, 0);
+  sim.velocities().col(2) = Vec3(0, -0.1f, 0);
+  sim.velocities().col(3) = Vec3(0, -0.1f, 0);
+  ASSERT_TRUE(sim.step());
+  EXPECT_NEAR(sim.velocities()(0, 1) - sim.velocities()(0, 0), -2.0, 1e-4);  // still closing at 2 m/s
+  for (int v = 0; v < 4; ++v) EXPECT_GE(sim.velocities()(1, v), -1e-6) << "vertex " << v << " still heading in";
+}
+
 TEST(Simulator, ClothDroppedOnSphereRestsOutsideIt) {
   ClothMesh cloth = make_grid_cloth(25, 25, 0.03f, Vec3(-0.36f, 0.45f, -0.36f), Vec3::UnitX(), Vec3::UnitZ());
   SolverParams p;
