@@ -46,8 +46,10 @@ nlohmann::json machine_context() {
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
   const std::string sha =
       command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) + "' rev-parse --short HEAD 2>/dev/null");
-  const std::string dirty = command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) +
-                                           "' status --porcelain --untracked-files=no 2>/dev/null");
+  // the source tree's state; results/ is what a reproduce run is rewriting, so it does not count
+  const std::string dirty =
+      command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) +
+                     "' status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null");
   return {{"date", date},
           {"host_name", host},
           {"executable", "clothbench"},
