@@ -159,6 +159,7 @@ void read_solver(Section s, SolverParams& p) {
   s.number("threshold", p.threshold, 1e-4, 10);
   s.number("stiff_factor", p.stiff_factor, 1, 1e4);
   s.number("limit_passes", p.limit_passes, 1, 1000);
+  s.number("limit_speed", p.limit_speed, 0, 100);
   s.flag("face_queries", p.face_queries);
   s.flag("reaction_force", p.reaction_force);
   s.vec3("gravity", p.gravity);

@@ -1,7 +1,8 @@
 // Super-elasticity limits (dressing section 4, walking section 3): velocity, directional and
 // position (Provot) corrections of over-stretched springs.
 // Our reading of the velocity limits: a spring whose next length (Eq. 3) would pass (1 + threshold) l0
-// keeps the relative velocity along it that ends the step at exactly that length. Directional: springs
+// keeps the relative velocity along it that ends the step at exactly that length; one already past it
+// is shortened at limit_speed at most. Directional: springs
 // perpendicular to v_dir average (Eq. 5); on the others the rear point catches up with the front one,
 // except that a held rear point (attached, in contact, or already following one) makes the front follow
 // it, and catching up that would add kinetic energy to the pair averages instead.
@@ -27,8 +28,8 @@ const char* to_string(Limit limit) {
 }
 
 Limit parse_limit(const std::string& name) {
-  for (Limit l : {Limit::kNone, Limit::kStiff, Limit::kPosition, Limit::kVelocity, Limit::kVelocityZero,
-                  Limit::kDirectional})
+  for (Limit l :
+       {Limit::kNone, Limit::kStiff, Limit::kPosition, Limit::kVelocity, Limit::kVelocityZero, Limit::kDirectional})
     if (name == to_string(l)) return l;
   throw std::invalid_argument("limit: unknown method '" + name +
                               "' (none, stiff, position, velocity, velocity-zero, directional)");
@@ -42,7 +43,7 @@ std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real
   const std::pair<Real, Real> average{mean - target * wb / (wa + wb), mean + target * wa / (wa + wb)};
   switch (limit) {
     case Limit::kVelocityZero: return {0, 0};  // dressing 4.3
-    case Limit::kVelocity: return average;       // walking Eq. 5
+    case Limit::kVelocity: return average;     // walking Eq. 5
     case Limit::kDirectional: {
       // walking Eq. 6 rules: perpendicular springs average, others: the rear point catches up with the front
       if (std::abs(cos_alpha) < 0.3f) return average;
@@ -84,8 +85,15 @@ void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, E
   // the relative velocity along the spring that ends the step at exactly max_len, the perpendicular
   // motion included (zero leaves a spring already past it there, and rotation lengthens it every step)
   const Real perp2 = (dv - (vb - va) * u).squaredNorm() * dt_ * dt_;
+  // a spring already past max_len (pinched between two moving body parts, dragged by the response,
+  // stretched when a seam merged) keeps its length but for limit_speed dt: shortening it by all of the
+  // excess in one step takes excess/dt (12 mm at dt 0.16 ms is 80 m/s), a speed that outlives the step
+  const Real hold = std::max(max_len, len);
+  const Real shorten = std::min(len - max_len, params_.limit_speed * dt_);
   const Real target =
-      l == Limit::kVelocityZero ? Real(0) : (std::sqrt(std::max(max_len * max_len - perp2, Real(0))) - len) / dt_;
+      l == Limit::kVelocityZero
+          ? Real(0)
+          : (std::sqrt(std::max(hold * hold - perp2, Real(0))) - len - std::max(shorten, Real(0))) / dt_;
   if (vb - va <= target) return;  // only further elongation is forbidden: a spring may shorten
   if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
   Real na = va, nb = vb;

@@ -19,12 +19,9 @@ SeamMethod parse_seam_method(const std::string& name) {
 
 const char* to_string(Phase p) {
   switch (p) {
-    case Phase::kSew:
-      return "sew";
-    case Phase::kDrape:
-      return "drape";
-    case Phase::kAnimate:
-      return "animate";
+    case Phase::kSew: return "sew";
+    case Phase::kDrape: return "drape";
+    case Phase::kAnimate: return "animate";
   }
   return "?";
 }
@@ -64,6 +61,7 @@ void validate(const Material& m, const SolverParams& p) {
   require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m (0 = automatic)", p.seam_stiffness);
   require(p.seam_reach > 0, "seam_reach", "> 0 m", p.seam_reach);
   require(p.seam_speed > 0, "seam_speed", "> 0 m/s", p.seam_speed);
+  require(p.limit_speed >= 0, "limit_speed", ">= 0 m/s", p.limit_speed);
   require(p.attraction_speed > 0, "attraction_speed", "> 0 m/s", p.attraction_speed);
   require(p.merge_distance > 0, "merge_distance", "> 0 m", p.merge_distance);
   require(p.max_speed > 0, "max_speed", "> 0 m/s", p.max_speed);
@@ -309,18 +307,59 @@ void Simulator::integrate_positions() {
 }
 
 void Simulator::merge_seams() {
-  // sewn pairs closer than merge_distance become one point (Durupinar 3.1): from then on both
-  // partners share the mass-weighted mean position and velocity
+  // sewn pairs closer than merge_distance become one point (Durupinar 3.1); where seams meet (a sleeve,
+  // the front and the back at the armpit) the pairs chain, and all of the chain is that one point
+  bool grown = false;
   for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
     auto& merged = merged_[static_cast<std::size_t>(p)];
+    if (merged || !((x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm() < params_.merge_distance))
+      continue;
+    merged = 1;
+    grown = true;
+  }
+  if (grown) group_merged_pairs();
+  // each group moves as one point: the mass-weighted mean position and velocity, or its attached
+  // members' when it has any
+  for (const auto& group : merged_groups_) {
+    Vec3 x = Vec3::Zero(), v = Vec3::Zero();
+    Real w = 0;
+    const bool attached = std::any_of(group.begin(), group.end(), [&](int i) { return inv_m_[i] == 0; });
+    for (int i : group) {
+      if (attached && inv_m_[i] > 0) continue;
+      x += m_[i] * x_.col(i);
+      v += m_[i] * v_.col(i);
+      w += m_[i];
+    }
+    for (int i : group)
+      if (inv_m_[i] > 0) col(x_, i) = x / w, col(v_, i) = v / w;
+  }
+}
+
+void Simulator::group_merged_pairs() {
+  // connected components of the merged pairs (union-find over the vertices)
+  std::vector<int> root(static_cast<std::size_t>(x_.cols()));
+  for (std::size_t i = 0; i < root.size(); ++i) root[i] = static_cast<int>(i);
+  const auto up = [&](int i) -> int& { return root[static_cast<std::size_t>(i)]; };
+  const auto find = [&](int i) {
+    while (up(i) != i) i = up(i) = up(up(i));  // path halving
+    return i;
+  };
+  std::vector<int> members;
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
+    if (!merged_[static_cast<std::size_t>(p)]) continue;
     const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
-    if (!merged && (x_.col(a) - x_.col(b)).norm() < params_.merge_distance) merged = 1;
-    if (!merged) continue;
-    const Real wa = m_[a], wb = m_[b];
-    const Vec3 xm = (wa * x_.col(a) + wb * x_.col(b)) / (wa + wb);
-    const Vec3 vm = (wa * v_.col(a) + wb * v_.col(b)) / (wa + wb);
-    if (inv_m_[a] > 0) col(x_, a) = xm, col(v_, a) = vm;
-    if (inv_m_[b] > 0) col(x_, b) = xm, col(v_, b) = vm;
+    up(find(a)) = find(b);
+    members.push_back(a);
+    members.push_back(b);
+  }
+  std::sort(members.begin(), members.end());
+  members.erase(std::unique(members.begin(), members.end()), members.end());
+  std::vector<int> group_of(root.size(), -1);
+  merged_groups_.clear();
+  for (int i : members) {  // in vertex order, so the result is deterministic
+    auto& g = group_of[static_cast<std::size_t>(find(i))];
+    if (g < 0) g = static_cast<int>(merged_groups_.size()), merged_groups_.emplace_back();
+    merged_groups_[static_cast<std::size_t>(g)].push_back(i);
   }
 }
 

@@ -156,6 +156,62 @@ TEST(Simulator, SeamsCloseNoFasterThanTheirSpeed) {
   EXPECT_GT(fastest, 0.9 * p.seam_speed);
 }
 
+TEST(Simulator, SeamsMeetingAtOnePointMoveAsOne) {
+  // a sleeve, a front and a back meet at the armpit: pairs (0, 1) and (2, 1) chain, and once merged the
+  // three vertices are one point with the mass-weighted mean velocity (momentum kept). Merging the pairs
+  // one after the other left vertex 0 behind, pulled apart again every step, at metres per second
+  ClothMesh c = two_particles(0.001f, 0);
+  c.positions.conservativeResize(3, 3);
+  c.positions.col(2) = Vec3(0.0015f, 0, 0);
+  c.vertex_area.resize(3);
+  c.vertex_area << 1, 0.25f, 2;
+  c.springs.resize(2, 0);
+  c.rest_length.resize(0);
+  c.kind.clear();
+  c.seam_pairs.resize(2, 2);
+  c.seam_pairs << 0, 2, 1, 1;
+  c.panel = {0, 1, 2};
+  Material mat;
+  mat.damping = 0;
+  SolverParams p = seam_params();
+  p.gravity = Vec3::Zero();
+  p.merge_distance = 0.002f;
+  Simulator merging(c, mat, p);
+  merging.velocities().col(0) = Vec3(1, 0, 0);
+  merging.velocities().col(2) = Vec3(0, -2, 0);
+  const Vec3 momentum = merging.velocities() * merging.masses();
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(merging.step());
+  EXPECT_EQ(merging.sewn_fraction(), 1);
+  for (int v : {0, 2}) {
+    EXPECT_LT((merging.positions().col(v) - merging.positions().col(1)).norm(), 1e-7f) << "vertex " << v;
+    EXPECT_LT((merging.velocities().col(v) - merging.velocities().col(1)).norm(), 1e-6f) << "vertex " << v;
+  }
+  EXPECT_LT((merging.velocities() * merging.masses() - momentum).norm(), 1e-6f * momentum.norm());
+}
+
+TEST(Simulator, LimitsShortenAnOverStretchedSpringAtLimitSpeed) {
+  // a spring already 50 % long (pinched by the body, or a seam merged across it) is shortened at
+  // limit_speed, not by all of its excess in one step (0.04 m / dt = 400 m/s, a speed that outlives the
+  // step and diverged a walking dress); with limit_speed 0 only its own force shortens it
+  for (Limit limit : {Limit::kVelocity, Limit::kDirectional}) {
+    for (Real limit_speed : {0.f, 2.f}) {
+      Material mat;
+      mat.damping = 0;
+      SolverParams p;
+      p.gravity = Vec3::Zero();
+      p.limit = limit;
+      p.limit_speed = limit_speed;
+      p.dt = 1e-4f;
+      Simulator sim(two_particles(0.1f, 0.05f), mat, p);
+      ASSERT_TRUE(sim.step());
+      const double spring_only = mat.k_structural * 0.05 * sim.dt() * 2 / sim.masses()[0];
+      const double closing = (sim.velocities().col(0) - sim.velocities().col(1)).x();
+      const double expected = std::max(spring_only, double(limit_speed));
+      EXPECT_NEAR(closing, expected, 1e-3 * expected) << to_string(limit) << ", limit_speed " << limit_speed;
+    }
+  }
+}
+
 TEST(Simulator, EulerStableBelowEq4BoundAndUnstableWellAbove) {
   EXPECT_TRUE(runs_stably(0.95f, 3000));
   EXPECT_FALSE(runs_stably(3.0f, 3000));

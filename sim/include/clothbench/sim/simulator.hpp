@@ -49,6 +49,7 @@ struct SolverParams {
   Real threshold = 0.10f;                ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
   Real stiff_factor = 10.f;              ///< Limit::kStiff multiplies every stiffness by this
   int limit_passes = 1;                  ///< passes of the position/velocity limit over all springs per iteration
+  Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
   bool face_queries = false;             ///< also query quad midpoints (dressing section 6)
   bool reaction_force = false;           ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
@@ -173,6 +174,7 @@ class Simulator {
   void integrate_positions();
   void limit_positions();
   void merge_seams();
+  void group_merged_pairs();
   bool check_divergence();
 
   ClothMesh mesh_;
@@ -190,6 +192,7 @@ class Simulator {
   std::vector<int> attach_tri_;       // per attached vertex
   Points3 attach_bary_;               // (3 x na)
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
+  std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
   Box3 start_box_;
   Collider* collider_ = nullptr;
   Phase phase_ = Phase::kDrape;
