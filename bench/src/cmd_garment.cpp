@@ -102,7 +102,9 @@ void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern
   std::printf("  vertices       %d\n", m.mesh.vertex_count());
   std::printf("  springs        %d structural, %d shear, %d flexion\n", m.mesh.count(SpringKind::kStructural),
               m.mesh.count(SpringKind::kShear), m.mesh.count(SpringKind::kFlexion));
-  std::printf("  quads          %d\n", static_cast<int>(m.mesh.quads.cols()));
+  const auto& q = m.mesh.quads;
+  const auto triangles = static_cast<int>((q.row(3).array() == q.row(2).array()).count());
+  std::printf("  quads          %d (%d of them triangles, on the outline)\n", static_cast<int>(q.cols()), triangles);
   std::printf("  seams          %zu, %d seam pairs\n", pat.seams.size(), static_cast<int>(m.mesh.seam_pairs.cols()));
   const auto offsets = seam_offsets(m);
   for (std::size_t s = 0; s < pat.seams.size(); ++s) {

@@ -149,8 +149,16 @@ PanelGrid grid_panel(const Panel& p, double h) {
       add(at(i + 1, j), at(i, j + 1), SpringKind::kShear);
       add(a, at(i + 2, j), SpringKind::kFlexion);
       add(a, at(i, j + 2), SpringKind::kFlexion);
-      if (at(i + 1, j) >= 0 && at(i + 1, j + 1) >= 0 && at(i, j + 1) >= 0)
-        g.quads.push_back({a, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  // cells: four kept corners make a quad; three (a cell the outline cuts, along a slanted or curved
+  // edge) make a triangle, stored as a quad whose last corner repeats its third; left out, they would
+  // leave a staircase of holes along the outline, in the pictures, the face queries and the masses
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      std::array<int, 4> c{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+      const auto kept = std::remove(c.begin(), c.end(), -1);
+      if (kept - c.begin() == 3) c[3] = c[2];
+      if (kept - c.begin() >= 3) g.quads.push_back(c);
     }
   return g;
 }
@@ -186,9 +194,11 @@ ClothMesh panel_mesh(const Panel& p, const PanelGrid& g, double h) {
     double area = 0;  // shoelace [cm^2]
     for (std::size_t k = 0; k < 4; ++k)
       area += cross(g.uv[static_cast<std::size_t>(c[k])], g.uv[static_cast<std::size_t>(c[(k + 1) % 4])]);
-    for (std::size_t k = 0; k < 4; ++k) m.vertex_area[c[k]] += static_cast<Real>(std::abs(area) / 8e4);
+    const std::size_t corners = c[3] == c[2] ? 3 : 4;  // a triangle's area goes to its three corners
+    for (std::size_t k = 0; k < corners; ++k)
+      m.vertex_area[c[k]] += static_cast<Real>(std::abs(area) / 2e4 / double(corners));
   }
-  const Real floor_area = static_cast<Real>(0.05 * h * h / 1e4);  // vertices touching no full cell
+  const Real floor_area = static_cast<Real>(0.05 * h * h / 1e4);  // vertices touching no cell
   for (Eigen::Index v = 0; v < nv; ++v) m.vertex_area[v] = std::max(m.vertex_area[v], floor_area);
   m.panel.assign(static_cast<std::size_t>(nv), 0);
   m.panel_names = {p.name};

@@ -21,7 +21,7 @@ struct ClothMesh {
   Pairs springs;                ///< spring end vertices (2 x ns)
   Scalars rest_length;          ///< natural length l0 per spring [m] (ns)
   std::vector<SpringKind> kind; ///< kind per spring (ns)
-  Quads quads;                  ///< grid cells, for face-body queries (4 x nq)
+  Quads quads;                  ///< grid cells, for face-body queries (4 x nq); a triangle repeats corner 2 as 3
   Pairs seam_pairs;             ///< vertex pairs to sew together (2 x np)
   std::vector<std::int32_t> panel;   ///< panel index per vertex (nv)
   std::vector<std::string> panel_names;  ///< one per panel

@@ -84,7 +84,8 @@ bool outline_self_intersects(const std::vector<Vec2d>& outline);
 /// the outline are kept; the ring of outside nodes 4-adjacent to them (Durupinar's Bresenham
 /// boundary) is snapped onto the closest outline point, so boundary vertices lie exactly on the
 /// outline. Springs (structural, shear, flexion) join kept grid neighbours, rest lengths from the
-/// 2D pattern; quads where all four corners are kept.
+/// 2D pattern; quads where all four corners are kept, triangles (quads repeating their third corner)
+/// where three are.
 MeshedPattern mesh_pattern(const Pattern& pattern, double spacing_cm, bool attach = true);
 
 /// Meshes with `options`: a fixed spacing, or the spacing whose vertex count is closest to the target.
