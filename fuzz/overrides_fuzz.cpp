@@ -56,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   try {
     const clothbench::Scene s = clothbench::parse_scene(g_texts[scene], kScenes[scene], overrides);
-    // an overridden scene still resolves its references without touching them
+    // an overridden scene still resolves its references (InputError when a file is absent)
     clothbench::resolve_scene_path(s, s.body.file);
     for (const clothbench::GarmentSpec& g : s.garments) clothbench::resolve_scene_path(s, g.file);
   } catch (const clothbench::InputError&) {

@@ -12,7 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     const clothbench::Scene scene = clothbench::parse_scene(text, "fuzz/scene.toml");
-    // a parsed scene resolves its references without touching them
+    // a parsed scene resolves its references (InputError when a file is absent)
     clothbench::resolve_scene_path(scene, scene.body.file);
     for (const clothbench::GarmentSpec& g : scene.garments) clothbench::resolve_scene_path(scene, g.file);
   } catch (const clothbench::InputError&) {

@@ -20,7 +20,7 @@ bool walking_body_present(ExperimentContext& ctx, const std::string& id) {
   const std::string body = data_path("body/mh_female_walk.glb");
   if (std::filesystem::exists(body)) return true;
   std::cerr << "  " << id << " skipped: the walking body " << body
-            << " is absent (set CLOTHBENCH_DATA to the shared data root)\n";
+            << " is absent (the data root is scenes/data unless CLOTHBENCH_DATA points elsewhere)\n";
   ctx.write(id, "skipped", "Skipped: the walking body `" + body + "` was not found. Set `CLOTHBENCH_DATA`.\n");
   return false;
 }

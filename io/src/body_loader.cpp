@@ -1,4 +1,5 @@
 // load_body: any format assimp reads -> one welded, closed, normalised mesh + skin + animations.
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -18,6 +19,7 @@
 #include <unistd.h>
 
 #include "body_model_impl.hpp"
+#include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
 
 namespace clothbench {
@@ -326,6 +328,9 @@ void find_bones_and_root(BodyModelImpl& m) {
 constexpr unsigned kReadFlags =
     aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
 
+// a skeleton-only file (BVH, skeleton FBX) is no body: assimp would draw its bones as a mesh
+void configure(Assimp::Importer& importer) { importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true); }
+
 std::string seconds(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", s);
@@ -344,6 +349,7 @@ void read_in_child(const std::string& path, double timeout_s) {
     for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
     alarm(static_cast<unsigned>(std::ceil(timeout_s)));
     Assimp::Importer importer;
+    configure(importer);
     importer.ReadFile(path, kReadFlags);  // a file assimp rejects cleanly is reported by the real read
     _exit(0);
   }
@@ -366,19 +372,24 @@ void read_in_child(const std::string& path, double timeout_s) {
 }
 
 const aiScene* read_scene(Assimp::Importer& importer, const std::string& path, double isolate_timeout_s) {
+  configure(importer);
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(located(path, 0, "file not found"));
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(located(path, 0, "not a regular file"));
   if (isolate_timeout_s > 0) read_in_child(path, isolate_timeout_s);
   const aiScene* scene = importer.ReadFile(path, kReadFlags);
-  if (!scene) throw InputError(located(path, 0, std::string("cannot be read as a mesh: ") + importer.GetErrorString()));
-  if (!scene->mRootNode || scene->mNumMeshes == 0) throw InputError(located(path, 0, "contains no meshes"));
+  const std::string why = scene ? "" : importer.GetErrorString();
+  // assimp's validation refuses a scene without meshes (a skeleton or motion file) before we see it
+  if ((scene && (!scene->mRootNode || scene->mNumMeshes == 0)) || why.find("mNumMeshes is 0") != std::string::npos)
+    throw InputError(located(path, 0, "contains no meshes (a skeleton or motion-only file is not a body)"));
+  if (!scene) throw InputError(located(path, 0, "cannot be read as a mesh: " + why));
   return scene;
 }
 
 }  // namespace
 
-BodyModel load_body(const std::string& path, const BodyLoadOptions& options) {
+BodyModel load_body(const std::string& reference, const BodyLoadOptions& options) {
+  const std::string path = resolve_data_reference(reference);
   Assimp::Importer importer;
   const aiScene* scene = read_scene(importer, path, options.isolate_timeout_s);
   auto m = std::make_unique<BodyModelImpl>();

@@ -1,4 +1,4 @@
-// Bodies through assimp: the shared walking body, Debian's human.zae, skinning, velocities, bad input.
+// Bodies through assimp: the walking body of scenes/data, Debian's human.zae, skinning, velocities, bad input.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -22,7 +22,7 @@ std::string walking_body() {
 
 #define REQUIRE_WALKING_BODY(path)         \
   const std::string path = walking_body(); \
-  if (path.empty()) GTEST_SKIP() << "shared data root absent (" << data_root() << ")"
+  if (path.empty()) GTEST_SKIP() << "walking body absent from the data root (" << data_root() << ")"
 
 // largest distance from a vertex of `a` to the nearest vertex of `b` [m] (order-free comparison)
 double max_nearest_distance(const Points3& a, const Points3& b) {
@@ -130,7 +130,8 @@ TEST(BodyLoader, BadFilesGiveClearErrors) {
   expect_input_error(kBad + "body_open.obj", "4 boundary edges");
   expect_input_error(kBad + "body_nan.obj", "");
   BodyLoadOptions open_ok;
-  open_ok.require_closed = false;
+  open_ok.require_closed = false;  // assimp would draw the bones as a closed 42-vertex mesh
+  expect_input_error(kBad + "body_skeleton_only.bvh", "contains no meshes", open_ok);
   EXPECT_EQ(load_body(kBad + "body_open.obj", open_ok).rest().triangles.cols(), 2);
 }
 
@@ -181,6 +182,26 @@ TEST(BodyCommand, ExitCodes) {
   EXPECT_EQ(run(walk + " --animation nope --at 1"), 2);
   EXPECT_EQ(run(walk + " --animation walk_07_01 --at 99"), 2);
   EXPECT_EQ(run(walk + " --animation walk_07_01 --at 2 --json"), 0);
+}
+
+// "data:REL" names a file under the data root, for the CLI as for scenes; a missing one names the root
+TEST(BodyLoader, DataReferencesResolveUnderTheDataRoot) {
+  EXPECT_EQ(load_body("data:body/mh_female_walk_rest.obj").rest().positions.cols(),
+            load_body(data_path("body/mh_female_walk_rest.obj")).rest().positions.cols());
+  try {
+    load_body("data:body/nobody.glb");
+    FAIL() << "no error for a missing data file";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(data_root()), std::string::npos) << msg;
+    EXPECT_NE(msg.find("CLOTHBENCH_DATA"), std::string::npos) << msg;
+  }
+}
+
+// the repository ships its data: a clone with nothing beside it has the walking body
+TEST(BodyLoader, TheRepositoryShipsTheWalkingBody) {
+  EXPECT_TRUE(std::filesystem::exists(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/data/body/mh_female_walk.glb"));
+  EXPECT_TRUE(std::filesystem::exists(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/data/LICENSES.txt"));
 }
 
 }  // namespace

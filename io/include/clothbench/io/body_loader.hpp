@@ -67,7 +67,8 @@ class BodyModel {
 
 /// Loads any format assimp reads. Throws InputError("PATH: what is wrong") for a missing, unreadable,
 /// empty, non-triangulable file, or (require_closed) a mesh that is not closed after welding
-/// ("... is not closed: N boundary edges").
+/// ("... is not closed: N boundary edges"), or a file with no mesh (a BVH skeleton). `path` may be a
+/// data reference ("data:REL", "debian:human"; see resolve_data_reference).
 BodyModel load_body(const std::string& path, const BodyLoadOptions& options = {});
 
 }  // namespace clothbench
