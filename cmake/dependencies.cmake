@@ -1,5 +1,6 @@
 # every dependency comes from a Debian package, found here once
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(Boost 1.74 REQUIRED)  # headers only: Boost.Geometry checks pattern outlines (sim)
 find_package(Threads REQUIRED)
 find_package(PkgConfig REQUIRED)
 if(CLOTHBENCH_WITH_GL)

@@ -380,30 +380,31 @@ class Parser {
            format_number(d.cursor.y()) + ") but starts at (" + format_number(d.start.x()) + ", " +
            format_number(d.start.y()) + "); end the last edge at the start point or with 'close'");
     if (d.panel.outline.size() < 3) fail("outline of panel '" + d.panel.name + "' has fewer than 3 points");
-    check_crossings(d);
+    check_outline(d);
     current_ = nullptr;
   }
 
-  void check_crossings(const PanelDraft& d) {
-    const auto& o = d.panel.outline;
-    const std::size_t n = o.size();
-    auto cross = [](const Vec2d& a, const Vec2d& b) { return a.x() * b.y() - a.y() * b.x(); };
-    auto crosses = [&](std::size_t i, std::size_t j) {
-      const Vec2d a = o[i], b = o[(i + 1) % n], c = o[j], e = o[(j + 1) % n];
-      const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a), d3 = cross(e - c, a - c),
-                   d4 = cross(e - c, b - c);
-      return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+  // sim's outline_fault (Boost.Geometry's validity test), named by the edge at fault and its line
+  void check_outline(const PanelDraft& d) {
+    const OutlineFault f = outline_fault(d.panel.outline);
+    if (f.what.empty()) return;
+    std::string message = "outline of panel '" + d.panel.name + "' " + f.what;
+    auto edge = [&](int segment) {
+      return static_cast<std::size_t>(d.segment_edge[static_cast<std::size_t>(segment)]);
     };
-    for (std::size_t j = 2; j < n; ++j)
-      for (std::size_t i = 0; i + 1 < j; ++i) {
-        if (i == 0 && j == n - 1) continue;
-        if (!crosses(i, j)) continue;
-        const int ei = d.segment_edge[i], ej = d.segment_edge[j];
-        line_ = d.edge_lines[static_cast<std::size_t>(ej)];
-        fail("outline of panel '" + d.panel.name + "' intersects itself: edge '" +
-             d.edge_names[static_cast<std::size_t>(ej)] + "' crosses edge '" +
-             d.edge_names[static_cast<std::size_t>(ei)] + "'");
+    if (f.segment >= 0) {
+      const std::size_t e = edge(f.segment);
+      line_ = d.edge_lines[e];
+      message += " at (" + format_number(f.at.x()) + ", " + format_number(f.at.y()) + ")";
+      if (f.other_segment >= 0) {
+        const std::size_t o = edge(f.other_segment);
+        message += ": edge '" + d.edge_names[e] + "' meets " +
+                   (o == e ? std::string("itself") : "edge '" + d.edge_names[o] + "'");
+      } else {
+        message += ", in edge '" + d.edge_names[e] + "'";
       }
+    }
+    fail(message);
   }
 
   // seam PANEL.EDGE PANEL.EDGE [reversed|aligned]

@@ -8,8 +8,8 @@
 
 namespace clothbench {
 
-/// Most points a panel outline may have once its curves are flattened, in either format: checking
-/// an outline for self-intersection takes time quadratic in its points (found by fuzz/).
+/// Most points a panel outline may have once its curves are flattened, in either format: the mesher
+/// measures the distance to the outline, every point of it, from every grid node (found by fuzz/).
 inline constexpr int kMaxOutlinePoints = 2000;
 
 /// Reads a pattern file: `.json` is read as a GarmentCode specification, anything else as

@@ -5,7 +5,12 @@
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <typeinfo>
 #include <utility>
+
+#include <boost/geometry/algorithms/is_valid.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/ring.hpp>
 
 namespace clothbench {
 
@@ -45,11 +50,75 @@ bool inside(const std::vector<Vec2d>& o, const Vec2d& p) {
 
 double cross(const Vec2d& a, const Vec2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-bool segments_cross(const Vec2d& a, const Vec2d& b, const Vec2d& c, const Vec2d& d) {
-  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
-  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+namespace bg = boost::geometry;
+
+// Boost.Geometry's is_valid visitor: keeps the failure it reports (it stops at the first) and where it
+// is: the two segments of a self-intersection, the apex of a spike. Consecutive duplicate points are
+// no failure.
+class FaultVisitor {
+ public:
+  bg::validity_failure_type failure = bg::no_failure;
+  int segment = -1, other_segment = -1;  // of a self-intersection
+  bool located = false;                  // `at` holds the self-intersection point or spike apex
+  Vec2d at = Vec2d::Zero();
+
+  template <bg::validity_failure_type Failure>
+  bool apply() {
+    return keep(Failure);
+  }
+  // self-intersections come with their turns, duplicate points with one of them
+  template <bg::validity_failure_type Failure, typename Data>
+  bool apply(const Data& data) {
+    if constexpr (Failure == bg::failure_self_intersections) {
+      if (!data.empty()) {
+        const auto& turn = *data.begin();
+        const int a = static_cast<int>(turn.operations[0].seg_id.segment_index);
+        const int b = static_cast<int>(turn.operations[1].seg_id.segment_index);
+        segment = std::max(a, b), other_segment = std::min(a, b);
+        locate(turn.point);
+      }
+    }
+    return keep(Failure);
+  }
+  // spikes come with (is the geometry linear, the spike's apex)
+  template <bg::validity_failure_type Failure, typename Data1, typename Data2>
+  bool apply(const Data1&, const Data2& apex) {
+    if constexpr (Failure == bg::failure_spikes) locate(apex);
+    return keep(Failure);
+  }
+
+ private:
+  bool keep(bg::validity_failure_type f) {
+    failure = f == bg::failure_duplicate_points ? bg::no_failure : f;
+    return failure == bg::no_failure;
+  }
+  template <typename Point>
+  void locate(const Point& p) {
+    at = Vec2d(bg::get<0>(p), bg::get<1>(p));
+    located = true;
+  }
+};
+
+// Runs is_valid on the outline as an open ring of the given orientation.
+template <bool Clockwise>
+FaultVisitor check_ring(const std::vector<Vec2d>& o) {
+  bg::model::ring<bg::model::d2::point_xy<double>, Clockwise, false> ring;
+  for (const auto& p : o) ring.push_back({p.x(), p.y()});
+  FaultVisitor visitor;
+  bg::is_valid(ring, visitor, bg::default_strategy());
+  return visitor;
 }
+
+// Twice the signed area of a closed outline (shoelace): > 0 counter-clockwise [cm^2].
+double twice_signed_area(const std::vector<Vec2d>& o) {
+  double a = 0;
+  for (std::size_t i = 0; i < o.size(); ++i) a += cross(o[i], o[(i + 1) % o.size()]);
+  return a;
+}
+
+// Grid nodes this close to the outline lie on it [fraction of the grid spacing]: rounding of the node
+// positions, far below any distance the mesher resolves.
+constexpr double kOnOutline = 1e-6;
 
 // Adds a boundary vertex at `q` to every edge it lies on (corners belong to two), keyed by its
 // arc position along the edge as a fraction of the edge length.
@@ -85,21 +154,29 @@ struct PanelGrid {
 void place_grid_vertices(const Panel& p, double h, PanelGrid& g, std::vector<int>& id, int& nx, int& ny) {
   Vec2d lo = p.outline[0], hi = p.outline[0];
   for (const auto& q : p.outline) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
-  nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / h)) + 3;
-  ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / h)) + 3;
+  // grid cells across the box; a spacing that divides it exactly counts exactly, not one more for
+  // the rounding of the division (that would shift the centred grid by h/2 off the outline)
+  auto cells = [&](double extent) { return static_cast<int>(std::ceil(extent / h - kOnOutline)); };
+  nx = cells(hi.x() - lo.x()) + 3;
+  ny = cells(hi.y() - lo.y()) + 3;
   // the grid is centred on the outline's box, so mirrored panels get mirrored vertices
   const Vec2d origin = 0.5 * (lo + hi) - 0.5 * h * Vec2d(nx - 1, ny - 1);
   auto node = [&](int i, int j) -> Vec2d { return origin + h * Vec2d(i, j); };
   id.assign(static_cast<std::size_t>(nx * ny), -1);
-  // inside nodes farther than h/4 from the outline are kept as they are
+  // inside nodes farther than h/4 from the outline are kept as they are; nodes on the outline (within
+  // rounding: a spacing that divides a straight edge's position) are kept too, as boundary vertices,
+  // whatever the inside test says there. The ring below would miss such a node at a corner: its
+  // 4-neighbours lie on the outline too, none of them an inside node
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const Vec2d q = node(i, j);
-      if (inside(p.outline, q) && closest_on_outline(p.outline, q).dist > 0.25 * h) {
-        id[static_cast<std::size_t>(j * nx + i)] = static_cast<int>(g.uv.size());
-        g.uv.push_back(q);
-        g.boundary.push_back(0);
-      }
+      const Closest c = closest_on_outline(p.outline, q);
+      const bool on = c.dist <= kOnOutline * h;
+      if (!on && !(c.dist > 0.25 * h && inside(p.outline, q))) continue;
+      id[static_cast<std::size_t>(j * nx + i)] = static_cast<int>(g.uv.size());
+      g.uv.push_back(on ? c.point : q);
+      g.boundary.push_back(on ? 1 : 0);
+      if (on) add_to_edges(p, c.point, id[static_cast<std::size_t>(j * nx + i)], g.edge_vertices);
     }
   // the ring around them is snapped onto the outline (Durupinar's boundary set, made smooth)
   auto near_kept = [&](const Vec2d& q) {
@@ -407,15 +484,45 @@ Eigen::Matrix3f placement_rotation(const Placement& pl) {
 
 }  // namespace
 
-bool outline_self_intersects(const std::vector<Vec2d>& o) {
-  const std::size_t n = o.size();
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;
-      if (segments_cross(o[i], o[(i + 1) % n], o[j], o[(j + 1) % n])) return true;
+OutlineFault outline_fault(const std::vector<Vec2d>& o) {
+  OutlineFault f;
+  for (std::size_t i = 0; i < o.size(); ++i)
+    if (!(o[i].cwiseAbs().maxCoeff() <= kMaxOutlineCoordinateCm)) {  // NaN too
+      f.what = o[i].allFinite() ? "has a point beyond +-1e6 cm (10 km)" : "has a point that is not finite";
+      f.segment = static_cast<int>(i), f.at = o[i];
+      return f;
     }
-  return false;
+  // Boost's polygons have one orientation: take the outline's own (a zero area fails anyway)
+  FaultVisitor v;
+  try {
+    v = twice_signed_area(o) < 0 ? check_ring<true>(o) : check_ring<false>(o);
+  } catch (const std::bad_cast& e) {  // Boost rescales the outline to integers: a factor out of range
+    f.what = "is too small to check (" + std::string(e.what()) + ")";
+    return f;
+  }
+  switch (v.failure) {
+    case bg::no_failure: return f;
+    case bg::failure_few_points: f.what = "has fewer than 3 points"; break;
+    case bg::failure_wrong_topological_dimension: f.what = "has no area (fewer than 3 distinct points)"; break;
+    case bg::failure_spikes: f.what = "runs back along itself"; break;
+    case bg::failure_self_intersections: f.what = "intersects itself"; break;
+    case bg::failure_wrong_orientation: f.what = "has no area"; break;
+    default: f.what = "is not a simple polygon (Boost.Geometry validity failure " + std::to_string(v.failure) + ")";
+  }
+  if (!v.located) return f;
+  f.at = v.at;
+  if (v.failure == bg::failure_self_intersections) {
+    f.segment = v.segment, f.other_segment = v.other_segment;
+  } else {
+    // a spike: the segment leaving its apex runs back along the one arriving there
+    const int n = static_cast<int>(o.size());
+    for (int i = 0; i < n && f.segment < 0; ++i)
+      if (o[static_cast<std::size_t>(i)] == v.at) f.segment = i, f.other_segment = (i + n - 1) % n;
+  }
+  return f;
 }
+
+bool outline_self_intersects(const std::vector<Vec2d>& o) { return !outline_fault(o).what.empty(); }
 
 double distance_to_outline(const std::vector<Vec2d>& outline, const Vec2d& p) {
   return closest_on_outline(outline, p).dist;
@@ -447,7 +554,8 @@ void validate_pattern(const Pattern& pat) {
     for (std::size_t e = 1; e < p.edge_begin.size(); ++e)
       if (p.edge_begin[e] <= p.edge_begin[e - 1] || p.edge_begin[e] >= n)
         fail("panel '" + p.name + "': bad edge start");
-    if (outline_self_intersects(p.outline)) fail("panel '" + p.name + "' outline intersects itself");
+    const OutlineFault fault = outline_fault(p.outline);
+    if (!fault.what.empty()) fail("panel '" + p.name + "' outline " + fault.what);
     for (int e : p.attached_edges)
       if (e < 0 || e >= p.edge_count()) fail("panel '" + p.name + "': attached edge out of range");
   }
@@ -517,12 +625,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, const MeshingOptions& o) {
   // area / spacing^2 ~ vertices: start there, then search the spacing on a log scale
   // (each panel's area counts positive, whichever way its outline turns)
   double area = 0;
-  for (const auto& p : pat.panels) {
-    double a = 0;
-    for (std::size_t i = 0; i < p.outline.size(); ++i)
-      a += 0.5 * cross(p.outline[i], p.outline[(i + 1) % p.outline.size()]);
-    area += std::abs(a);
-  }
+  for (const auto& p : pat.panels) area += 0.5 * std::abs(twice_signed_area(p.outline));
   const double h0 = std::sqrt(area / o.target_vertices);
   MeshedPattern best;
   double best_err = 1e300;

@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace clothbench {
@@ -91,6 +95,111 @@ TEST(Garment, RejectsBadPatterns) {
   pat = two_panel(40, 50);
   std::swap(pat.panels[0].outline[1], pat.panels[0].outline[2]);  // bow tie
   EXPECT_THROW(validate_pattern(pat), std::invalid_argument);
+  pat = two_panel(40, 50);
+  pat.panels[1].outline = {Vec2d(0, 0), Vec2d(20, 0), Vec2d(40, 0), Vec2d(10, 0)};  // no area
+  EXPECT_THROW(validate_pattern(pat), std::invalid_argument);
+}
+
+std::vector<Vec2d> points(std::initializer_list<std::array<double, 2>> xy) {
+  std::vector<Vec2d> out;
+  for (const auto& p : xy) out.push_back(Vec2d(p[0], p[1]));
+  return out;
+}
+
+TEST(Garment, OutlineFaultsFromBoostGeometry) {
+  // simple outlines pass whichever way they turn, straight runs of several points included
+  for (const auto& o :
+       {points({{0, 0}, {10, 0}, {20, 0}, {20, 10}, {0, 10}}), points({{0, 0}, {0, 10}, {20, 10}, {20, 0}, {10, 0}})}) {
+    const OutlineFault f = outline_fault(o);
+    EXPECT_EQ(f.what, "");
+    EXPECT_EQ(f.segment, -1);
+    EXPECT_FALSE(outline_self_intersects(o));
+  }
+  struct Case {
+    const char* name;
+    std::vector<Vec2d> outline;
+    const char* what;
+    int segment, other;
+    Vec2d at;
+  };
+  const Case cases[] = {
+      // segments 0 and 2 cross in the middle
+      {"bow tie", points({{0, 0}, {4, 4}, {4, 0}, {0, 4}}), "intersects itself", 2, 0, Vec2d(2, 2)},
+      // two lobes meet at one point (20, 20), the outline touching itself; clockwise too
+      {"figure eight", points({{0, 0}, {20, 0}, {20, 20}, {40, 20}, {40, 40}, {20, 40}, {20, 20}, {0, 20}}),
+       "intersects itself", 5, 1, Vec2d(20, 20)},
+      {"figure eight, clockwise", points({{0, 20}, {20, 20}, {20, 40}, {40, 40}, {40, 20}, {20, 20}, {20, 0}, {0, 0}}),
+       "intersects itself", 4, 0, Vec2d(20, 20)},
+      // a point of the outline lies on another segment
+      {"touching an edge", points({{0, 0}, {40, 0}, {40, 40}, {20, 0}, {0, 40}}), "intersects itself", 2, 0,
+       Vec2d(20, 0)},
+      // the outline runs back along the segment it came on (collinear overlap)
+      {"spike", points({{0, 0}, {50, 0}, {40, 0}, {40, 50}, {0, 50}}), "runs back along itself", 1, 0, Vec2d(50, 0)},
+      {"no area", points({{0, 0}, {20, 0}, {40, 0}}), "runs back along itself", 2, 1, Vec2d(40, 0)},
+      {"far away", points({{0, 0}, {2e6, 0}, {0, 10}}), "beyond", 1, -1, Vec2d(2e6, 0)},
+      {"not finite", points({{0, 0}, {10, 0}, {std::nan(""), 10}}), "not finite", 2, -1, Vec2d::Constant(std::nan(""))},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const OutlineFault f = outline_fault(c.outline);
+    EXPECT_NE(f.what.find(c.what), std::string::npos) << f.what;
+    EXPECT_EQ(f.segment, c.segment);
+    EXPECT_EQ(f.other_segment, c.other);
+    if (c.at.allFinite()) {
+      EXPECT_LT((f.at - c.at).norm(), 1e-9) << f.at.transpose();
+    }
+    EXPECT_TRUE(outline_self_intersects(c.outline));
+  }
+  // Boost's integer rescaling cannot take a vanishingly small outline: an answer, not an exception
+  EXPECT_NO_THROW(outline_fault(points({{0, 0}, {1e-14, 0}, {1e-14, 1e-14}, {0, 1e-14}})));
+}
+
+// Meshes one panel at spacing h and counts its vertices, checking the corners are among them.
+int exact_grid_vertices(const Panel& panel, double h) {
+  Pattern pat;
+  pat.name = "grid";
+  pat.panels = {panel};
+  const MeshedPattern m = mesh_pattern(pat, h);
+  for (const auto& corner : panel.outline) {
+    bool found = false;
+    for (Eigen::Index v = 0; v < m.uv.cols(); ++v) found = found || (m.uv.col(v) - corner).norm() < 1e-9;
+    EXPECT_TRUE(found) << "no vertex at the corner (" << corner.transpose() << ") at spacing " << h;
+  }
+  return m.mesh.vertex_count();
+}
+
+TEST(Garment, SpacingThatDividesARectangleKeepsEveryGridVertex) {
+  // every grid node on the outline is a vertex: the (u-min, v-min) corner was dropped (1,848 of 1,849)
+  Panel square = rect("cloth", 100, 100);
+  for (auto& q : square.outline) q.x() -= 50;  // as the pattern file's `rect`: bottom edge centred
+  EXPECT_EQ(exact_grid_vertices(square, 100.0 / 42), 43 * 43);
+  EXPECT_EQ(exact_grid_vertices(square, 2), 51 * 51);
+  EXPECT_EQ(exact_grid_vertices(square, 100.0 / 3), 4 * 4);
+  EXPECT_EQ(exact_grid_vertices(rect("wide", 200, 100), 10), 21 * 11);
+  EXPECT_EQ(exact_grid_vertices(rect("tall", 30, 70), 100.0 / 30), 10 * 22);
+  // clockwise, and away from the origin
+  Panel cw = rect("cw", 36, 12);
+  std::reverse(cw.outline.begin(), cw.outline.end());
+  for (auto& q : cw.outline) q += Vec2d(13.7, -41.3);
+  EXPECT_EQ(exact_grid_vertices(cw, 1.2), 31 * 11);
+  // an L (a reflex corner at (10, 10)): 11 x 11 nodes less the 5 x 5 of the missing quarter
+  Panel ell;
+  ell.name = "ell";
+  ell.outline = points({{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}});
+  ell.edge_begin = {0, 1, 2, 3, 4, 5};
+  EXPECT_EQ(exact_grid_vertices(ell, 2), 11 * 11 - 5 * 5);
+}
+
+TEST(Garment, SpacingThatDividesARectangleMakesFullCells) {
+  Pattern pat;
+  pat.name = "grid";
+  pat.panels = {rect("cloth", 200, 100)};
+  const MeshedPattern m = mesh_pattern(pat, 10);
+  EXPECT_EQ(m.mesh.quads.cols(), 20 * 10);
+  for (Eigen::Index q = 0; q < m.mesh.quads.cols(); ++q) EXPECT_NE(m.mesh.quads(3, q), m.mesh.quads(2, q));
+  int boundary = 0;
+  for (auto b : m.boundary) boundary += b;
+  EXPECT_EQ(boundary, 2 * (21 + 11) - 4);
 }
 
 }  // namespace

@@ -73,15 +73,35 @@ struct MeshedPattern {
 };
 
 /// Throws std::invalid_argument naming the panel/seam when the pattern is malformed: fewer than 3
-/// points, bad edge indices, an edge with no segment, a self-intersecting outline, a seam naming a
-/// missing panel or edge, or the same edge pair sewn twice.
+/// points, bad edge indices, an edge with no segment, an outline that is not a simple polygon
+/// (outline_fault), a seam naming a missing panel or edge, or the same edge pair sewn twice.
 void validate_pattern(const Pattern& pattern);
 
-/// True when two non-adjacent segments of the closed outline intersect.
+/// Outline coordinates beyond +-this [cm] (10 km) are rejected: Boost.Geometry's validity test
+/// works on the outline rescaled to integers and overflows past about 1e9.
+inline constexpr double kMaxOutlineCoordinateCm = 1e6;
+
+/// Why a closed outline is not a simple polygon with an area, as Boost.Geometry's is_valid sees it
+/// (either orientation is accepted). Segment s runs from outline[s] to outline[s + 1], the last one
+/// back to outline[0].
+struct OutlineFault {
+  std::string what;          ///< empty when the outline is valid, else e.g. "intersects itself"
+  int segment = -1;          ///< the segment at fault (of two that meet, the later one), or -1
+  int other_segment = -1;    ///< the segment it crosses, touches or runs back along, or -1
+  Vec2d at = Vec2d::Zero();  ///< where it happens [cm] (when segment >= 0)
+};
+
+/// Checks a closed outline (points not repeating the first): finite coordinates within
+/// +-kMaxOutlineCoordinateCm, at least 3 points, and no crossing, touching (a figure eight),
+/// running back along itself (a zero-width spike) or zero area.
+OutlineFault outline_fault(const std::vector<Vec2d>& outline);
+
+/// True when outline_fault finds a fault (the outline crosses, touches or runs back along itself).
 bool outline_self_intersects(const std::vector<Vec2d>& outline);
 
 /// Meshes every panel into a regular grid at `spacing_cm` (dressing section 3): grid nodes inside
-/// the outline are kept; the ring of outside nodes 4-adjacent to them (Durupinar's Bresenham
+/// the outline are kept, and so are nodes on it (a spacing that divides a rectangle keeps its whole
+/// grid, corners included); the ring of outside nodes 4-adjacent to them (Durupinar's Bresenham
 /// boundary) is snapped onto the closest outline point, so boundary vertices lie exactly on the
 /// outline. Springs (structural, shear, flexion) join kept grid neighbours, rest lengths from the
 /// 2D pattern; quads where all four corners are kept, triangles (quads repeating their third corner)
