@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "clothbench/sim/mesh_query.hpp"
@@ -15,6 +16,40 @@ SeamMethod parse_seam_method(const std::string& name) {
   if (name == "elastic") return SeamMethod::kElastic;
   if (name == "attraction") return SeamMethod::kAttraction;
   throw std::invalid_argument("seam_method: unknown method '" + name + "' (elastic, attraction)");
+}
+
+const char* to_string(MassModel m) { return m == MassModel::kArea ? "area" : "equal"; }
+
+MassModel parse_mass_model(const std::string& name) {
+  if (name == "area") return MassModel::kArea;
+  if (name == "equal") return MassModel::kEqual;
+  throw std::invalid_argument("masses: unknown model '" + name + "' (area, equal)");
+}
+
+const char* to_string(Regime r) { return r == Regime::kStable ? "stable" : "papers"; }
+
+Regime parse_regime(const std::string& name) {
+  if (name == "stable") return Regime::kStable;
+  if (name == "papers") return Regime::kPapers;
+  throw std::invalid_argument("regime: unknown preset '" + name + "' (stable, papers)");
+}
+
+void apply_regime(Regime regime, Material& material, SolverParams& params) {
+  const Material stable_material;
+  const SolverParams stable;
+  params.regime = regime;
+  const bool papers = regime == Regime::kPapers;
+  // the papers' clock: equal point masses (dressing Eq. 3), dt 5 ms, springs soft enough for it (automatic)
+  params.masses = papers ? MassModel::kEqual : stable.masses;
+  params.dt = papers ? Real(0.005) : stable.dt;
+  params.limit = stable.limit;  // velocity modification (walking Eq. 5) carries the stretch
+  params.seam_stiffness = stable.seam_stiffness;
+  params.limit_after_response = papers;
+  // soft seams pull k |d| up to a 5 cm gap (5 mm with the stable regime's stiff ones): about the stable pull
+  params.seam_reach = papers ? Real(0.05) : stable.seam_reach;
+  material.k_structural = papers ? Real(0) : stable_material.k_structural;
+  material.k_shear = papers ? Real(0) : stable_material.k_shear;
+  material.k_flexion = papers ? Real(0) : stable_material.k_flexion;
 }
 
 const char* to_string(Phase p) {
@@ -46,13 +81,15 @@ void require(bool ok, const char* name, const std::string& rule, double value) {
 
 void validate(const Material& m, const SolverParams& p) {
   require(m.density > 0, "density", "> 0 kg/m^2", m.density);
-  require(m.k_structural > 0, "k_structural", "> 0 N/m", m.k_structural);
-  require(m.k_shear > 0, "k_shear", "> 0 N/m", m.k_shear);
-  require(m.k_flexion > 0, "k_flexion", "> 0 N/m", m.k_flexion);
-  require(m.damping >= 0, "damping", ">= 0 N s/m", m.damping);
+  require(m.k_structural >= 0, "k_structural", ">= 0 N/m (0 = automatic)", m.k_structural);
+  require(m.k_shear >= 0, "k_shear", ">= 0 N/m (0 = automatic)", m.k_shear);
+  require(m.k_flexion >= 0, "k_flexion", ">= 0 N/m (0 = automatic)", m.k_flexion);
+  require(m.damping >= 0, "damping", ">= 0 1/s (per unit mass)", m.damping);
   require(m.friction >= 0 && m.friction <= 1, "friction", "in [0, 1]", m.friction);
   require(m.reflection >= 0 && m.reflection <= 1, "reflection", "in [0, 1]", m.reflection);
   require(p.dt >= 0, "dt", ">= 0 s (0 = automatic)", p.dt);
+  const bool auto_k = m.k_structural == 0 || m.k_shear == 0 || m.k_flexion == 0;
+  require(!auto_k || p.dt > 0, "dt", "given (> 0 s) when a stiffness is automatic (0)", p.dt);
   require(p.dt_fraction > 0 && p.dt_fraction <= 1, "dt_fraction", "in (0, 1]", p.dt_fraction);
   require(p.threshold > 0 && p.threshold < 1, "threshold", "in (0, 100) %", p.threshold);
   require(p.stiff_factor >= 1, "stiff_factor", ">= 1", p.stiff_factor);
@@ -66,6 +103,11 @@ void validate(const Material& m, const SolverParams& p) {
   require(p.merge_distance > 0, "merge_distance", "> 0 m", p.merge_distance);
   require(p.max_speed > 0, "max_speed", "> 0 m/s", p.max_speed);
   require(p.bounds_margin > 0, "bounds_margin", "> 0 m", p.bounds_margin);
+  const IntegratorParams& i = p.integration;
+  require(i.cg_tolerance > 0 && i.cg_tolerance < 1, "cg_tolerance", "in (0, 1)", i.cg_tolerance);
+  require(i.cg_max_iterations >= 1, "cg_max_iterations", ">= 1", i.cg_max_iterations);
+  require(i.rk_tol_x > 0, "rk_tol_x", "> 0 m", i.rk_tol_x);
+  require(i.rk_tol_v > 0, "rk_tol_v", "> 0 m/s", i.rk_tol_v);
 }
 
 // column i of a 3 x n matrix as a fixed-size vector reference
@@ -77,18 +119,12 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
     : mesh_(std::move(mesh)), material_(material), params_(params) {
   mesh_.validate("cloth");
   validate(material_, params_);
-  const Eigen::Index nv = mesh_.positions.cols(), ns = mesh_.springs.cols();
-  // stiffness per spring from its kind (Eq. 2); kStiff raises all of them
-  const Real factor = params_.limit == Limit::kStiff ? params_.stiff_factor : Real(1);
-  const Real k_kind[kSpringKinds] = {material_.k_structural, material_.k_shear, material_.k_flexion};
-  k_.resize(ns);
-  for (Eigen::Index s = 0; s < ns; ++s) k_[s] = factor * k_kind[static_cast<int>(mesh_.kind[s])];
+  integrator_ = IntegratorPtr(make_integrator(params_.integrator, params_.integration));
+  const Eigen::Index nv = mesh_.positions.cols();
   m_ = mesh_.vertex_area * material_.density;
-  // elastic seams: a zero-length spring per pair, given, or as stiff as the structural springs (the
-  // cloth's own scale at any resolution; a sliver vertex on an outline is no more at risk from it
-  // than from its grid springs, and seam_reach and seam_speed bound the pull from afar)
-  seam_k_ = Scalars::Constant(mesh_.seam_pairs.cols(),
-                              params_.seam_stiffness > 0 ? params_.seam_stiffness : factor * material_.k_structural);
+  // dressing Eq. 3: "m is the mass of each point", one mass for all
+  if (params_.masses == MassModel::kEqual) m_.setConstant(m_.sum() / Real(std::max<Eigen::Index>(nv, 1)));
+  set_stiffness();
   inv_m_ = m_.cwiseInverse();
   x_ = mesh_.positions;
   v_ = Points3::Zero(3, nv);
@@ -96,17 +132,68 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   mid_.resize(3, mesh_.quads.cols());
   merged_.assign(static_cast<std::size_t>(mesh_.seam_pairs.cols()), 0);
   start_box_ = bounding_box(x_);
-  // time step: given, checked against Eq. 4, or chosen from it
+  // time step: given (explicit Euler's checked against Eq. 4), or the integrator's automatic one
   const Real bound = stable_dt();
   if (params_.dt == 0) {
-    dt_ = params_.dt_fraction * std::min(bound, spectral_dt());
-  } else if (params_.dt > bound && !params_.allow_unstable_dt) {
+    dt_ = integrator_->automatic_dt(params_.dt_fraction * std::min(bound, spectral_dt()));
+  } else if (params_.dt > bound && integrator_->bounded_by_eq4() && !params_.allow_unstable_dt) {
     throw std::invalid_argument("dt = " + std::to_string(params_.dt) + " s exceeds the stability bound " +
                                 std::to_string(bound) +
                                 " s of dressing Eq. 4 (0.4 pi sqrt(m/K)); set allow_unstable_dt to run it anyway");
   } else {
     dt_ = params_.dt;
   }
+}
+
+void Simulator::set_stiffness() {
+  // stiffness per spring from its kind (Eq. 2); kStiff raises all of them
+  const Real factor = params_.limit == Limit::kStiff ? params_.stiff_factor : Real(1);
+  const Real given[kSpringKinds] = {material_.k_structural, material_.k_shear, material_.k_flexion};
+  const Real ratio[kSpringKinds] = {1, Real(1) / 3, Real(1) / 6};  // automatic ones keep the defaults' 60:20:10
+  const bool seam_auto = params_.seam_stiffness == 0;
+  const bool elastic = params_.seam_method == SeamMethod::kElastic;
+  Real k_auto = 0;  // automatic structural stiffness [N/m]
+  if (given[0] == 0 || given[1] == 0 || given[2] == 0) {
+    // the largest K for which Gershgorin's bound (every spring and seam at every vertex) and Eq. 4 both admit
+    // dt / dt_fraction: each vertex row is fixed + K x scaled; the automatic seams follow k_structural
+    const Eigen::Index nv = m_.size();
+    Scalars fixed = Scalars::Zero(nv), scaled = Scalars::Zero(nv);
+    const auto add = [&](int a, int b, Real k, bool automatic) {
+      Scalars& row = automatic ? scaled : fixed;
+      const Real cross = k / std::sqrt(m_[a] * m_[b]);
+      row[a] += k / m_[a] + cross;
+      row[b] += k / m_[b] + cross;
+    };
+    for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
+      const int kind = static_cast<int>(mesh_.kind[s]);
+      add(mesh_.springs(0, s), mesh_.springs(1, s), given[kind] == 0 ? ratio[kind] : given[kind], given[kind] == 0);
+    }
+    if (elastic)
+      for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
+        const bool automatic = seam_auto && given[0] == 0;
+        add(mesh_.seam_pairs(0, p), mesh_.seam_pairs(1, p),
+            seam_auto ? (automatic ? Real(1) : given[0]) : params_.seam_stiffness, automatic);
+      }
+    const Real omega = 2 * params_.dt_fraction / params_.dt;  // Gershgorin: dt <= 2 / omega_max
+    k_auto = std::numeric_limits<Real>::max();
+    for (Eigen::Index v = 0; v < nv; ++v)
+      if (scaled[v] > 0) k_auto = std::min(k_auto, (omega * omega - fixed[v]) / scaled[v]);
+    // dressing Eq. 4 at dt / dt_fraction for the stiffest automatic spring (ratio 1)
+    const Real eq4 = Real(0.4 * M_PI) * params_.dt_fraction / params_.dt;
+    if (nv) k_auto = std::min(k_auto, eq4 * eq4 * m_.minCoeff());
+    if (!(k_auto > 0) || k_auto == std::numeric_limits<Real>::max())
+      throw std::invalid_argument("automatic stiffness: the given stiffnesses alone exceed the stability bound of dt = " +
+                                  std::to_string(params_.dt) + " s; give a smaller dt or softer springs");
+  }
+  for (int kind = 0; kind < kSpringKinds; ++kind)
+    k_kind_[kind] = factor * (given[kind] == 0 ? ratio[kind] * k_auto : given[kind]);
+  k_.resize(mesh_.springs.cols());
+  for (Eigen::Index s = 0; s < k_.size(); ++s) k_[s] = k_kind_[static_cast<int>(mesh_.kind[s])];
+  // elastic seams: a zero-length spring per pair, given, or as stiff as the structural springs (the
+  // cloth's own scale at any resolution; a sliver vertex on an outline is no more at risk from it
+  // than from its grid springs, and seam_reach and seam_speed bound the pull from afar)
+  seam_k_ = Scalars::Constant(mesh_.seam_pairs.cols(),
+                              seam_auto ? k_kind_[0] : params_.seam_stiffness);
 }
 
 Real Simulator::stable_dt() const {
@@ -140,21 +227,18 @@ bool Simulator::step() {
   detect();
   double cdr_ms = cdr.ms();
   Stopwatch cs;
-  accumulate_forces();
-  double cs_ms = cs.ms();
-  cdr.restart();
-  if (params_.reaction_force) add_reaction_forces();
-  cdr_ms += cdr.ms();
-  cs.restart();
-  integrate_velocities();
+  const ForceModel model = force_model();
+  model.eval(x_, v_, f_);
+  integrator_->advance(model, dt_, x_, f_, v_, drift_);
   limit_velocities();
   if (params_.seam_method == SeamMethod::kElastic) cap_seam_speeds();
   if (phase_ == Phase::kSew && params_.seam_method == SeamMethod::kAttraction) attract_seams();
-  cs_ms += cs.ms();
+  double cs_ms = cs.ms();
   cdr.restart();
   respond();
   cdr_ms += cdr.ms();
   cs.restart();
+  if (params_.limit_after_response && collider_) limit_after_response();
   integrate_positions();
   limit_positions();
   merge_seams();
@@ -183,59 +267,18 @@ void Simulator::detect() {
                    {contacts_.data() + nv, static_cast<std::size_t>(nq)});
 }
 
-void Simulator::accumulate_forces() {
-  // gravity (off while sewing) and viscous damping -C_vd v (dressing section 3)
+ForceModel Simulator::force_model() const {
+  // gravity off while sewing; elastic seams pull in every phase until their pairs merge
   const Vec3 g = phase_ == Phase::kSew ? Vec3::Zero() : params_.gravity;
-  f_ = g * m_.transpose();
-  f_ -= material_.damping * v_;
-  // springs: dressing Eq. 2, f = -k (|d| - l0) d/|d| on the first end
-  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
-    const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
-    const Vec3 d = x_.col(a) - x_.col(b);
-    const Real len = d.norm();
-    if (!(len > 0)) continue;
-    const Vec3 fa = -k_[s] * (len - mesh_.rest_length[s]) / len * d;
-    col(f_, a) += fa;
-    col(f_, b) -= fa;
-  }
-  // elastic seams: zero-length springs between partners not yet merged, in every phase (a seam
-  // left open by the sew phase keeps pulling while the garment drapes; it does not come apart)
-  if (params_.seam_method != SeamMethod::kElastic) return;
-  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
-    if (merged_[static_cast<std::size_t>(p)]) continue;
-    const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
-    const Vec3 d = x_.col(a) - x_.col(b);
-    const Real len = d.norm();
-    if (!(len > 0)) continue;
-    const Vec3 dir = d / len;
-    // pulling no harder than k seam_reach: panels placed far apart are drawn in without a jolt
-    const Vec3 fa = -seam_k_[p] * std::min(len, params_.seam_reach) * dir;
-    col(f_, a) += fa;
-    col(f_, b) -= fa;
-  }
-}
-
-void Simulator::add_reaction_forces() {
-  // walking Eq. 16: f_reaction = -C_fric f_t - f_n for colliding points pushed into the body
-  for (Eigen::Index i = 0; i < x_.cols(); ++i) {
-    const Contact& c = contacts_[static_cast<std::size_t>(i)];
-    if (!c.hit) continue;
-    const Vec3 f = f_.col(i);
-    const Real fn_len = f.dot(c.normal);
-    if (fn_len >= 0) continue;
-    const Vec3 fn = fn_len * c.normal;
-    col(f_, i) += -material_.friction * (f - fn) - fn;
-  }
-}
-
-void Simulator::integrate_velocities() {
-  // dressing Eq. 3: a = f/m, v += dt a (attached vertices have 1/m = 0)
-  v_ += dt_ * (f_.array().rowwise() * inv_m_.transpose().array()).matrix();
+  const bool elastic = params_.seam_method == SeamMethod::kElastic;
+  return ForceModel{mesh_, k_, seam_k_, merged_, m_, inv_m_, contacts_, g, material_.damping, elastic,
+                    params_.seam_reach, params_.reaction_force, material_.friction};
 }
 
 void Simulator::cap_seam_speeds() {
-  // partners of an open seam approach each other at seam_speed at most: the excess of their
-  // closing speed is removed along the seam, shared by inverse mass (momentum is kept)
+  // partners of an open seam approach each other at seam_speed at most, and no faster than closes the gap in
+  // one step (no overshoot at a large dt; below dt = merge_distance / seam_speed this never binds): the excess
+  // of their closing speed is removed along the seam, shared by inverse mass (momentum is kept)
   for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
     if (merged_[static_cast<std::size_t>(p)]) continue;
     const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
@@ -243,7 +286,7 @@ void Simulator::cap_seam_speeds() {
     const Real len = d.norm(), w = inv_m_[a] + inv_m_[b];
     if (!(len > 0) || !(w > 0)) continue;
     const Vec3 dir = d / len;
-    const Real excess = -(v_.col(a) - v_.col(b)).dot(dir) - params_.seam_speed;
+    const Real excess = -(v_.col(a) - v_.col(b)).dot(dir) - std::min(params_.seam_speed, len / dt_);
     if (excess <= 0) continue;
     col(v_, a) += (excess * inv_m_[a] / w) * dir;
     col(v_, b) -= (excess * inv_m_[b] / w) * dir;
@@ -301,9 +344,19 @@ void Simulator::respond() {
   }
 }
 
+void Simulator::limit_after_response() {
+  // the velocity limit again, the body's contacts held like attached vertices (1/m = 0 for the pass)
+  const Scalars inv_m = inv_m_;
+  for (Eigen::Index i = 0; i < x_.cols(); ++i)
+    if (contacts_[static_cast<std::size_t>(i)].hit) inv_m_[i] = 0;
+  limit_velocities();
+  inv_m_ = inv_m;
+}
+
 void Simulator::integrate_positions() {
-  // dressing Eq. 3: p += dt v
+  // dressing Eq. 3: p += dt v (and what the integrator moved besides: rk45)
   x_ += dt_ * v_;
+  if (drift_.cols() == x_.cols()) x_ += drift_;
 }
 
 void Simulator::merge_seams() {

@@ -1,7 +1,7 @@
 #pragma once
-/// The simulation loop of the papers: spring forces (Eq. 2), explicit Euler (Eq. 3) at a time
-/// step bounded by Eq. 4, super-elasticity limits (dressing 4, walking 3), seaming, and
-/// collision response from any Collider's contacts (dressing Eq. 12, walking Eq. 15-16).
+/// The simulation loop of the papers: spring forces (Eq. 2), an integrator by name (explicit Euler, Eq. 3, at a
+/// time step bounded by Eq. 4; implicit Euler; rk45), super-elasticity limits (dressing 4, walking 3), seaming,
+/// and collision response from any Collider's contacts (dressing Eq. 12, walking Eq. 15-16).
 #include <optional>
 #include <string>
 #include <utility>
@@ -10,16 +10,20 @@
 #include "clothbench/sim/body_frame.hpp"
 #include "clothbench/sim/cloth.hpp"
 #include "clothbench/sim/collider.hpp"
+#include "clothbench/sim/integrator.hpp"
 
 namespace clothbench {
 
-/// Cloth material. Stiffness per spring kind is the k of Eq. 2.
+/// Cloth material. Stiffness per spring kind is the k of Eq. 2; 0 = automatic (the papers' regime, see
+/// SolverParams::regime): derived from the point masses and dt so that explicit Euler is stable at dt.
 struct Material {
   Real density = 0.15f;      ///< mass per area [kg/m^2]
-  Real k_structural = 60.f;  ///< [N/m]
-  Real k_shear = 20.f;       ///< [N/m]
-  Real k_flexion = 10.f;     ///< [N/m]
-  Real damping = 0.002f;     ///< C_vd of the viscous force -C_vd v [N s/m]
+  Real k_structural = 60.f;  ///< [N/m]; 0 = automatic
+  Real k_shear = 20.f;       ///< [N/m]; 0 = automatic (k_structural / 3)
+  Real k_flexion = 10.f;     ///< [N/m]; 0 = automatic (k_structural / 6)
+  /// Viscous damping per unit mass: the force -m_i c v_i (dressing section 3's -C_vd v with C_vd = m_i c)
+  /// [1/s]. 12/s is the old 0.002 N s/m at the mean vertex mass (0.17 g) of the 400-vertex shirt.
+  Real damping = 12.f;
   Real friction = 0.6f;      ///< C_fric of Eq. 12/15/16
   Real reflection = 0.0f;    ///< C_refl of Eq. 12/15
 };
@@ -36,19 +40,44 @@ enum class SeamMethod { kElastic, kAttraction };
 const char* to_string(SeamMethod m);
 SeamMethod parse_seam_method(const std::string& name);
 
+/// How the point masses are set: kArea gives each vertex density x its share of the panel area (outline
+/// slivers get little); kEqual gives every vertex total mass / nv ("the mass of each point", dressing Eq. 3).
+enum class MassModel { kArea, kEqual };
+const char* to_string(MassModel m);
+MassModel parse_mass_model(const std::string& name);
+
+/// Named presets of the solver (scenes/README.md). kStable: the defaults (area masses, stiff springs,
+/// automatic dt below Eq. 4 and Gershgorin). kPapers: the papers' clock: equal point masses, dt 5 ms, soft
+/// springs derived from the mass per point and dt (Material k = 0), stretch held by the velocity limit.
+enum class Regime { kStable, kPapers };
+const char* to_string(Regime r);
+Regime parse_regime(const std::string& name);
+struct SolverParams;
+/// Sets the fields the preset decides (keys given explicitly should be applied after it).
+void apply_regime(Regime regime, Material& material, SolverParams& params);
+
 /// Phases of a dressing or animation run (DESIGN.md): sew without gravity, drape, animate.
 enum class Phase { kSew, kDrape, kAnimate };
 const char* to_string(Phase p);
 
 /// Solver parameters; every field has a documented default.
 struct SolverParams {
-  Real dt = 0;                           ///< time step [s]; 0 = automatic: dt_fraction x min(Eq. 4 bound, spectral_dt)
-  Real dt_fraction = 0.9f;               ///< automatic dt as a fraction of the Eq. 4 bound (0, 1]
-  bool allow_unstable_dt = false;        ///< accept a given dt above the Eq. 4 bound (stability studies)
+  /// time step [s]; 0 = automatic: dt_fraction x min(Eq. 4 bound, spectral_dt) (explicit-euler, rk45), 10 ms
+  /// (implicit-euler)
+  Real dt = 0;
+  std::string integrator = "explicit-euler";  ///< integrator_names(); only explicit-euler is bounded by Eq. 4
+  IntegratorParams integration;               ///< tolerances of implicit-euler and rk45
+  Real dt_fraction = 0.9f;               ///< automatic dt (and automatic stiffness) margin (0, 1]
+  Regime regime = Regime::kStable;       ///< the preset these parameters came from (apply_regime); a label
+  MassModel masses = MassModel::kArea;   ///< point masses
+  bool allow_unstable_dt = false;        ///< explicit-euler: accept a given dt above the Eq. 4 bound (stability studies)
   Limit limit = Limit::kVelocity;        ///< super-elasticity limit
   Real threshold = 0.10f;                ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
   Real stiff_factor = 10.f;              ///< Limit::kStiff multiplies every stiffness by this
   int limit_passes = 1;                  ///< passes of the position/velocity limit over all springs per iteration
+  /// velocity limits run once more after the collision response, vertices in contact kept as the response left
+  /// them (the response would otherwise undo the limit where the body holds the cloth; papers regime)
+  bool limit_after_response = false;
   Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
   bool face_queries = false;             ///< also query quad midpoints (dressing section 6)
   bool reaction_force = false;           ///< add the reaction force of walking Eq. 16
@@ -80,7 +109,7 @@ struct StrainStats {
 /// Cumulative per-phase timings [ms] and counts; CD&R and CS as in walking Table 1.
 struct SimTimings {
   double cdr_ms = 0;  ///< collision detection (collider query) and response
-  double cs_ms = 0;   ///< cloth simulation: forces, integration, limits, seaming
+  double cs_ms = 0;   ///< cloth simulation: forces (the reaction force of Eq. 16 included), integration, limits, seaming
   long iterations = 0;
 };
 
@@ -105,7 +134,7 @@ Vec3 collision_response(const Vec3& v, const Contact& contact, Real friction, Re
 std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1, Real wb = 1,
                                              Real target = 0);
 
-/// One cloth, one collider (not owned), explicit Euler.
+/// One cloth, one collider (not owned), one integrator.
 class Simulator {
  public:
   /// Validates every parameter and throws std::invalid_argument naming the bad one.
@@ -118,7 +147,7 @@ class Simulator {
   void set_phase(Phase phase) { phase_ = phase; }
   Phase phase() const { return phase_; }
 
-  /// One iteration (Eq. 3 plus limits, seaming and response). Returns false once diverged.
+  /// One iteration (forces, the integrator's update, limits, seaming and response). Returns false once diverged.
   bool step();
 
   /// Binds the mesh's `attached` vertices to their closest triangles of `body` (Durupinar 3.2);
@@ -126,6 +155,10 @@ class Simulator {
   void attach(const BodyFrame& body);
   /// Moves attached vertices with the body (same topology as in attach()).
   void follow_attachments(const BodyFrame& body);
+
+  const char* integrator() const { return integrator_->name(); }
+  /// Force evaluations, sub-steps, CG iterations and times of the integrator so far.
+  const IntegratorStats& integrator_stats() const { return integrator_->stats(); }
 
   /// The Eq. 4 bound 0.4 pi sqrt(m_min / K_max) [s] for the current stiffnesses.
   Real stable_dt() const;
@@ -135,6 +168,8 @@ class Simulator {
   /// the smaller of the two.
   Real spectral_dt() const;
   Real dt() const { return dt_; }
+  /// Stiffness per kind as used [N/m] (automatic ones resolved, the stiff limit's factor applied).
+  Real stiffness(SpringKind kind) const { return k_kind_[static_cast<int>(kind)]; }
 
   const ClothMesh& mesh() const { return mesh_; }
   const Points3& positions() const { return x_; }   ///< [m] (3 x nv)
@@ -162,10 +197,9 @@ class Simulator {
 
  private:
   void detect();
-  void accumulate_forces();
-  void add_reaction_forces();
-  void integrate_velocities();
+  ForceModel force_model() const;
   void limit_velocities();
+  void limit_after_response();
   void limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s);
   Vec3 spring_object_velocity(int a, int b) const;
   void cap_seam_speeds();
@@ -180,11 +214,16 @@ class Simulator {
   ClothMesh mesh_;
   Material material_;
   SolverParams params_;
+  void set_stiffness();
+
+  Real k_kind_[kSpringKinds] = {};  // stiffness per spring kind [N/m]
   Scalars k_;          // stiffness per spring [N/m] (ns)
   Scalars seam_k_;     // elastic seam stiffness per seam pair [N/m] (np)
   Scalars m_;          // mass per vertex [kg] (nv)
   Scalars inv_m_;      // 1/m, 0 for attached vertices (nv)
   Points3 x_, v_, f_;  // positions [m], velocities [m/s], forces [N] (3 x nv)
+  Points3 drift_;      // the integrator's position change besides dt v (3 x nv, or empty when none)
+  IntegratorPtr integrator_;
   Points3 mid_;        // quad midpoints [m] (3 x nq)
   std::vector<Contact> contacts_;
   std::vector<std::uint8_t> merged_;  // per seam pair
