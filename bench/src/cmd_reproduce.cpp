@@ -1,4 +1,5 @@
 // clothbench reproduce [--only ID,...] [--out DIR] [--quick] [--repetitions N]
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <set>
@@ -44,6 +45,16 @@ void write_index(const std::string& out, const std::vector<std::pair<std::string
   write_text_file(out + "/README.md", md.str());
 }
 
+// the experiment IDs of `reproduce --help`, from the registry, with their titles
+std::string experiment_list() {
+  std::size_t width = 0;
+  for (const auto& e : experiments()) width = std::max(width, e.id.size());
+  std::ostringstream s;
+  s << "Experiments (--only ID,...; in the order they run):\n";
+  for (const auto& e : experiments()) s << "  " << e.id << std::string(width + 2 - e.id.size(), ' ') << e.title << "\n";
+  return s.str();
+}
+
 int reproduce(const ReproduceArgs& a) {
   std::set<std::string> wanted;
   for (const auto& list : a.only) {
@@ -79,7 +90,8 @@ int reproduce(const ReproduceArgs& a) {
 void add_reproduce_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<ReproduceArgs>();
   auto* cmd = app.add_subcommand("reproduce", "Regenerate the papers' tables and charts with our figures beside theirs");
-  cmd->add_option("--only", args->only, "comma-separated experiment IDs (default: all)");
+  cmd->add_option("--only", args->only, "comma-separated experiment IDs (default: all; listed below)");
+  cmd->footer(experiment_list);
   cmd->add_option("--out", args->out, "output folder")->capture_default_str();
   cmd->add_flag("--quick", args->quick, "fewer iterations and sizes, same code paths (smoke test)");
   cmd->add_option("--repetitions", args->repetitions, "runs per configuration (median reported)")->check(CLI::Range(1, 100));

@@ -1,4 +1,4 @@
-// clothbench run SCENE [--collider NAME] [--set key=value]... [--json FILE] [--png FILE]
+// clothbench run SCENE [--collider NAME] [--set key=value]... [--json FILE] [--png FILE] [--strict] [--estimate]
 #include <cstdio>
 #include <iostream>
 
@@ -15,15 +15,47 @@ namespace {
 struct RunArgs {
   std::string scene, collider, json, png, gltf;
   std::vector<std::string> sets;
-  bool quiet = false;
+  bool quiet = false, strict = false, estimate = false;
 };
 
-void print_summary(const RunResult& r) {
+// the scene as run: its file, the --set overrides and the hash of the effective configuration
+void print_config(const RunArgs& a, const RunResult& r) {
+  std::string sets;
+  for (const auto& s : a.sets) sets += " " + s;
+  std::printf("  scene %s, %s; config %s\n", a.scene.c_str(), sets.empty() ? "no --set" : ("--set" + sets).c_str(),
+              r.config_hash.c_str());
+}
+
+// converged, and the verdict against the accuracy limits (report.hpp)
+void print_verdict(const RunResult& r) {
+  const std::vector<std::string> misses = limit_misses(r);
+  std::string text;
+  for (const auto& m : misses) text += (text.empty() ? "" : ", ") + m;
+  std::printf(
+      "  converged %s; accuracy: %s\n", r.converged ? "yes" : "no",
+      misses.empty() ? ("meets the limits (" + limits_text(r) + ")").c_str() : ("MISSES the limits: " + text).c_str());
+}
+
+// the run's JSON: context with the scene, its overrides and config hash; the row with the verdict
+nlohmann::json run_document(const RunArgs& a, const Scene& scene, const RunResult& r) {
+  nlohmann::json row = result_row(r, scene.name + "/" + scene.collider);
+  row["meets_limits"] = limit_misses(r).empty() ? 1 : 0;
+  row["limit_misses"] = limit_misses(r);
+  nlohmann::json doc = result_document(nlohmann::json::array({row}));
+  doc["context"]["scene"] = a.scene;
+  doc["context"]["overrides"] = a.sets;
+  doc["context"]["config_hash"] = r.config_hash;
+  return doc;
+}
+
+void print_summary(const RunArgs& a, const RunResult& r) {
   std::printf("%s / %s: %d vertices (%d query points), body %ld triangles\n", r.scene.c_str(), r.collider.c_str(),
               r.vertices, r.query_points, r.body_triangles);
+  print_config(a, r);
   std::printf("  %s\n", kDefinitions);
-  std::printf("  dt %.3f ms (Eq. 4 bound %.3f ms, Gershgorin bound %.3f ms), set-up %.1f ms\n", 1e3 * r.dt_s,
-              1e3 * r.dt_bound_s, 1e3 * r.dt_spectral_s, r.setup_ms);
+  std::printf("  %s, regime %s: dt %.3f ms (Eq. 4 bound %.3f ms, Gershgorin bound %.3f ms), set-up %.1f ms\n",
+              r.integrator.c_str(), r.regime.c_str(), 1e3 * r.dt_s, 1e3 * r.dt_bound_s, 1e3 * r.dt_spectral_s,
+              r.setup_ms);
   std::printf("  %-8s %10s %10s %s\n", "phase", "iterations", "time [s]", "reached");
   const auto phase = [](const char* name, const PhaseResult& p, const char* goal) {
     std::printf("  %-8s %10ld %10.2f %s\n", name, p.iterations, p.wall_ms / 1e3, p.reached ? goal : "no");
@@ -48,7 +80,7 @@ void print_summary(const RunResult& r) {
       "seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
       r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.accuracy.crossings,
       r.accuracy.crossings_pct, r.seam_gap_max_mm, 100 * r.strain_max, 100 * r.strain_p99);
-  std::printf("  converged %s\n", r.converged ? "yes" : "no");
+  print_verdict(r);
 }
 
 int run(const RunArgs& a) {
@@ -56,12 +88,11 @@ int run(const RunArgs& a) {
   if (!a.collider.empty()) scene.collider = a.collider;
   RunOptions options;
   options.progress = !a.quiet;
+  options.estimate_only = a.estimate;
   const RunResult r = run_scene(scene, options);
-  print_summary(r);
-  if (!a.json.empty())
-    write_text_file(
-        a.json,
-        result_document(nlohmann::json::array({result_row(r, scene.name + "/" + scene.collider)})).dump(2) + "\n");
+  if (a.estimate) return 0;
+  print_summary(a, r);
+  if (!a.json.empty()) write_text_file(a.json, run_document(a, scene, r).dump(2) + "\n");
   if (!a.png.empty()) {
     std::vector<Image> views;
     for (View v : {View::kFront, View::kSide, View::kBack})
@@ -71,14 +102,18 @@ int run(const RunArgs& a) {
                 picture_renderer_name(default_picture_renderer()).c_str());
   }
   if (!a.gltf.empty()) export_dressed(a.gltf, r.final_body, r.mesh);
-  return r.divergence ? 3 : 0;
+  if (r.divergence) return 3;
+  return a.strict && !limit_misses(r).empty() ? 4 : 0;
 }
 
 }  // namespace
 
 void add_run_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<RunArgs>();
-  auto* cmd = app.add_subcommand("run", "Run one scene with one collider; exit 3 when the simulation diverged");
+  auto* cmd = app.add_subcommand(
+      "run",
+      "Run one scene with one collider; exit 2 on bad input, 3 when the simulation diverged, 4 when it "
+      "missed the accuracy limits under --strict");
   cmd->add_option("scene", args->scene, "scene file (TOML)")->required();
   cmd->add_option("--collider", args->collider, "collider name (see `clothbench colliders`)");
   cmd->add_option("--set", args->sets, "override a scene field: section.key=value (repeatable)");
@@ -86,6 +121,8 @@ void add_run_command(CLI::App& app, Action& action) {
   cmd->add_option("--png", args->png, "write a picture of the dressed body (front, side, back)");
   cmd->add_option("--gltf", args->gltf, "export the dressed body as binary glTF (.glb)");
   cmd->add_flag("--quiet", args->quiet, "no progress lines on stderr");
+  cmd->add_flag("--strict", args->strict, "exit 4 when the run misses the accuracy limits");
+  cmd->add_flag("--estimate", args->estimate, "print how long the run may take and stop (nothing simulated)");
   cmd->callback([&action, args] { action = [args] { return run(*args); }; });
 }
 

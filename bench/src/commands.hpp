@@ -1,6 +1,7 @@
 #pragma once
 /// The CLI of DESIGN.md: one file per subcommand (cmd_<name>.cpp), each adding itself to the app.
-/// A command's action runs after parsing and returns the exit code (0 ok, 1 regression, 2 bad input).
+/// A command's action runs after parsing and returns the exit code (0 ok, 1 regression, 2 bad input,
+/// 3 diverged, 4 accuracy limits missed under `run --strict`).
 #include <functional>
 
 #include <CLI/CLI.hpp>

@@ -2,11 +2,16 @@
 #include <exception>
 #include <iostream>
 
+#include "clothbench/config.h"
 #include "commands.hpp"
+#include "report.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"clothbench: garment simulation and cloth-body collision benchmark"};
   app.require_subcommand(1);
+  // the source tree's git SHA as the reports record it (git runs only when --version is given)
+  app.set_version_flag("--version",
+                       [] { return "clothbench " CLOTHBENCH_VERSION " (git " + clothbench::git_sha() + ")"; });
   clothbench::cli::Action action;
   clothbench::cli::add_colliders_command(app, action);
   clothbench::cli::add_demo_command(app, action);

@@ -36,7 +36,62 @@ std::string cpu_model() {
   return "unknown";
 }
 
+// 6.1, 0.5, 5: two decimals at most, no trailing zeros
+std::string short_num(double v) {
+  std::string s = num(v, 2);
+  if (s.find('.') == std::string::npos) return s;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+// one limit: its name, the run's value and the limit, in the unit shown
+struct LimitCheck {
+  const char* name;
+  double value, limit;
+  const char* unit;
+};
+
+std::vector<LimitCheck> limit_checks(const RunResult& r, bool with_strain) {
+  const AccuracyLimits& l = kAccuracyLimits;
+  std::vector<LimitCheck> checks{{"inside", r.accuracy.inside_pct, l.inside_pct, "%"},
+                                 {"depth", r.accuracy.depth_max_mm, l.depth_mm, "mm"},
+                                 {"crossings", r.accuracy.crossings_pct, l.crossings_pct, "%"},
+                                 {"seam gap", r.seam_gap_max_mm, l.seam_gap_mm, "mm"}};
+  if (with_strain && r.strain_threshold > 0)
+    checks.push_back({"strain", 100 * r.strain_max, 100 * (r.strain_threshold + l.strain_excess), "%"});
+  return checks;
+}
+
 }  // namespace
+
+std::string git_sha() {
+  const std::string sha =
+      command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) + "' rev-parse --short HEAD 2>/dev/null");
+  if (sha.empty()) return "unknown";
+  // the source tree's state; results/ is what a reproduce run is rewriting, so it does not count
+  const std::string dirty =
+      command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) +
+                     "' status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null");
+  return sha + (dirty.empty() ? "" : "-dirty");
+}
+
+std::vector<std::string> limit_misses(const RunResult& r, bool with_strain) {
+  if (r.divergence) return {"diverged"};
+  std::vector<std::string> misses;
+  for (const LimitCheck& c : limit_checks(r, with_strain))
+    if (!(c.value <= c.limit))  // NaN misses too
+      misses.push_back(std::string(c.name) + " " + short_num(c.value) + " " + c.unit + " > " + short_num(c.limit) +
+                       " " + c.unit);
+  return misses;
+}
+
+std::string limits_text(const RunResult& r, bool with_strain) {
+  std::string text;
+  for (const LimitCheck& c : limit_checks(r, with_strain))
+    text += (text.empty() ? "" : ", ") + std::string(c.name) + " <= " + short_num(c.limit) + " " + c.unit;
+  return text;
+}
 
 nlohmann::json machine_context() {
   char host[256] = {};
@@ -44,12 +99,6 @@ nlohmann::json machine_context() {
   const std::time_t now = std::time(nullptr);
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  const std::string sha =
-      command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) + "' rev-parse --short HEAD 2>/dev/null");
-  // the source tree's state; results/ is what a reproduce run is rewriting, so it does not count
-  const std::string dirty =
-      command_output("git -C '" + std::string(CLOTHBENCH_SOURCE_DIR) +
-                     "' status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null");
   return {{"date", date},
           {"host_name", host},
           {"executable", "clothbench"},
@@ -59,7 +108,7 @@ nlohmann::json machine_context() {
           {"build_type", CLOTHBENCH_BUILD_TYPE},
           {"cxx_flags", CLOTHBENCH_CXX_FLAGS},
           {"library_build_type", CLOTHBENCH_BUILD_TYPE},
-          {"git_sha", sha.empty() ? "unknown" : sha + (dirty.empty() ? "" : "-dirty")},
+          {"git_sha", git_sha()},
           {"threads", 1}};
 }
 
@@ -77,6 +126,8 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"setup_ms", r.setup_ms},
                      {"cdr_ms", r.cdr_ms_per_iteration()},
                      {"cs_ms", r.cs_ms_per_iteration()},
+                     {"integrator", r.integrator},
+                     {"regime", r.regime},
                      {"dt_ms", 1e3 * r.dt_s},
                      {"dt_bound_ms", 1e3 * r.dt_bound_s},
                      {"dt_spectral_ms", 1e3 * r.dt_spectral_s},
@@ -86,6 +137,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"threads", r.threads},
                      {"converged", r.converged ? 1 : 0},
                      {"diverged", r.divergence ? 1 : 0}};
+  if (!r.config_hash.empty()) row["config_hash"] = r.config_hash;
   if (r.frames > 0) {
     row["frames"] = r.frames;
     row["fps"] = r.animate.wall_ms > 0 ? 1e3 * double(r.frames) / r.animate.wall_ms : 0.0;

@@ -3,13 +3,37 @@
 /// with speed and accuracy counters in every row; machine context; atomic file writes.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "runner.hpp"
 
 namespace clothbench {
 
+/// The source tree's short git SHA, with "-dirty" for uncommitted source changes; "unknown"
+/// outside a git checkout.
+std::string git_sha();
+
 /// The machine and build: date, host, CPU model, cores, compiler, flags, build type, git SHA.
 nlohmann::json machine_context();
+
+/// The accuracy limits a drape must meet: `minimal` searches the smallest model meeting them, `run`
+/// prints its verdict against them. Crossings are the holes of dressing section 7 ("a smaller
+/// number [of vertices] produces holes on the garments").
+struct AccuracyLimits {
+  double inside_pct = 0.5;      ///< cloth points inside the body [%]
+  double depth_mm = 5;          ///< deepest point inside the body [mm]
+  double crossings_pct = 1;     ///< structural springs crossing the body [%]
+  double seam_gap_mm = 2;       ///< widest seam pair [mm]
+  double strain_excess = 0.01;  ///< strain above the super-elasticity threshold (runs with a limit)
+};
+inline constexpr AccuracyLimits kAccuracyLimits{};
+
+/// What a run misses of kAccuracyLimits, e.g. "inside 6.1 % > 0.5 %"; {"diverged"} for a diverged
+/// run; empty when it meets them. Strain counts when `with_strain` and the run had a limit
+/// (RunResult::strain_threshold > 0).
+std::vector<std::string> limit_misses(const RunResult& r, bool with_strain = true);
+/// The limits that apply to the run, e.g. "inside <= 0.5 %, depth <= 5 mm, ...".
+std::string limits_text(const RunResult& r, bool with_strain = true);
 
 /// One benchmarks[] row named `name`: iterations, real_time = ms per iteration, and the counters
 /// of DESIGN.md. Fields that do not apply (accuracy of a diverged run, fps of a static body) are

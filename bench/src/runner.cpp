@@ -1,9 +1,11 @@
 // run_scene: wires body, garments, simulator, collider and oracle (the only place that does).
 #include "runner.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/errors.hpp"
@@ -109,22 +111,34 @@ std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::str
   return make_collider(name, scene.collider_options);
 }
 
-// progress on stderr, at most once a second, only after the first second
+// progress on stderr, at most once a second, only after the first second, with an ETA: the time
+// per iteration so far times the iterations left of the plan (an upper bound: phases end early
+// when sewn or settled)
 class Progress {
  public:
-  Progress(bool on, std::string label) : on_(on), label_(std::move(label)) {}
+  Progress(bool on, std::string label, const Simulator& sim)
+      : on_(on), label_(std::move(label)), sim_(sim), start_(sim.timings().iterations) {}
+  // from now on, at most `iterations` more
+  void plan(long iterations) { end_ = sim_.timings().iterations + iterations; }
   template <class... A>
   void report(const char* format, A... args) {
     if (!on_ || clock_.ms() < next_ms_) return;
     next_ms_ = clock_.ms() + 1000;
-    std::fprintf(stderr, "  [%s %.0f s] ", label_.c_str(), clock_.ms() / 1e3);
+    std::fprintf(stderr, "  [%s %.0f s, ETA <= %s] ", label_.c_str(), clock_.ms() / 1e3, eta().c_str());
     std::fprintf(stderr, format, args...);
     std::fputc('\n', stderr);
   }
 
  private:
+  std::string eta() const {
+    const long now = sim_.timings().iterations, done = now - start_;
+    if (done <= 0) return "?";
+    return format_duration(clock_.ms() / 1e3 / double(done) * double(std::max(0L, end_ - now)));
+  }
   bool on_;
   std::string label_;
+  const Simulator& sim_;
+  long start_, end_ = 0;
   Stopwatch clock_;
   double next_ms_ = 1000;
 };
@@ -185,6 +199,89 @@ void drape(const Scene& scene, Simulator& sim, Progress& progress, PhaseResult& 
   clock.finish(r);
 }
 
+// the animate phase's frames: `steps` iterations each, `lead_in` frames before the measured `frames`
+struct AnimationPlan {
+  long steps = 0, lead_in = 0, frames = 0;
+};
+
+AnimationPlan animation_plan(const Scene& scene, const BodySource& source, double dt) {
+  if (!source.moves()) return {};
+  const double frame_dt = 1.0 / scene.body.fps;
+  AnimationPlan p;
+  p.steps = std::max(1L, static_cast<long>(std::ceil(frame_dt / dt)));
+  p.lead_in = static_cast<long>(std::floor((source.start() - source.dress_time()) / frame_dt + 1e-9));
+  p.frames = static_cast<long>(std::floor((source.end() - source.start()) / frame_dt + 1e-9));
+  return p;
+}
+
+// the most iterations each phase may take; the animate phase's lead-in runs with the dressing collider
+struct Budget {
+  long sew = 0, drape = 0, animate = 0, lead_in = 0, frames = 0;
+  long total() const { return sew + drape + animate; }
+  long dressing() const { return sew + drape + lead_in; }
+};
+
+Budget iteration_budget(const Scene& scene, const BodySource& source, const Simulator& sim) {
+  Budget b;
+  if (scene.stop.sew && sim.mesh().seam_pairs.cols() > 0) b.sew = iteration_cap(scene, scene.stop.sew_max_s, sim.dt());
+  b.drape = iteration_cap(scene, scene.stop.drape_max_s, sim.dt());
+  const AnimationPlan a = animation_plan(scene, source, sim.dt());
+  b.frames = a.lead_in + a.frames;
+  b.animate = b.frames * a.steps;
+  b.lead_in = a.lead_in * a.steps;
+  return b;
+}
+
+// cloth simulation per iteration [ms]: a few iterations of a copy of the simulator without
+// collisions (the run never sees them)
+double cloth_ms_per_iteration(const Simulator& sim, Phase phase) {
+  Simulator copy = sim;
+  copy.set_collider(nullptr);
+  copy.set_phase(phase);
+  Stopwatch clock;
+  long n = 0;
+  bool alive = true;
+  do {
+    alive = copy.step();
+    ++n;
+  } while (alive && n < 3 && clock.ms() < 20);
+  return clock.ms() / double(n);
+}
+
+// collision detection per query point [ms]: batches of the cloth's points (spread over it) until
+// 50 ms or 256 points; colliders answer queries without keeping state (only their stats count them)
+double query_ms_per_point(const Points3& cloth, Collider& collider) {
+  const Eigen::Index count = std::min<Eigen::Index>(256, cloth.cols()),
+                     stride = cloth.cols() / std::max<Eigen::Index>(1, count);
+  Points3 sample(3, count);
+  for (Eigen::Index i = 0; i < count; ++i) sample.col(i) = cloth.col(i * stride);
+  std::vector<Contact> contacts(static_cast<std::size_t>(count));
+  Stopwatch clock;
+  Eigen::Index done = 0;
+  while (done < count && (done == 0 || clock.ms() < 50)) {
+    const Eigen::Index batch = std::min<Eigen::Index>(16, count - done);
+    collider.query(PointsView(sample.data() + 3 * done, static_cast<std::size_t>(batch)),
+                   {contacts.data() + done, static_cast<std::size_t>(batch)});
+    done += batch;
+  }
+  return done > 0 ? clock.ms() / double(done) : 0;
+}
+
+// the run's simulation time [s], extrapolated to the budget: cloth simulation and queries per
+// iteration (with the dressing collider up to the measured animation), plus one collider update
+// per animation frame as long as its set-up
+double estimate_seconds(const Simulator& sim, Collider& dresser, Collider& collider, int query_points, const Budget& b,
+                        double update_ms) {
+  const double cloth_ms = cloth_ms_per_iteration(sim, b.sew > 0 ? Phase::kSew : Phase::kDrape);
+  const double dress_ms = query_ms_per_point(sim.positions(), dresser) * query_points;
+  const double measure_ms = &collider == &dresser || b.total() == b.dressing()
+                                ? dress_ms
+                                : query_ms_per_point(sim.positions(), collider) * query_points;
+  return (cloth_ms * double(b.total()) + dress_ms * double(b.dressing()) +
+          measure_ms * double(b.total() - b.dressing()) + update_ms * double(b.frames)) /
+         1e3;
+}
+
 // one body frame: evaluate (timed), update the collider, move attachments, then `steps` cloth steps
 bool advance_frame(const BodySource& source, double t, long steps, Simulator& sim, Collider& collider,
                    BodyFrame& frame, double& skinning_ms) {
@@ -205,10 +302,8 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   if (!source.moves()) return;
   sim.set_phase(Phase::kAnimate);
   const double frame_dt = 1.0 / scene.body.fps;
-  const long steps = std::max(1L, static_cast<long>(std::ceil(frame_dt / sim.dt())));
+  const auto [steps, lead_in, frames] = animation_plan(scene, source, sim.dt());
   r.steps_per_frame = double(steps);
-  const long lead_in = static_cast<long>(std::floor((source.start() - source.dress_time()) / frame_dt + 1e-9));
-  const long frames = static_cast<long>(std::floor((source.end() - source.start()) / frame_dt + 1e-9));
   double unmeasured_ms = 0;
   bool alive = true;
   sim.set_collider(&dresser);
@@ -265,10 +360,23 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
 
 namespace {
 
+// "estimate: at most about 2 min 25 s (brute, 1234 queries/iteration, up to 7000 iterations ...)" on stderr
+void print_estimate(const std::string& label, const Scene& scene, const RunResult& r) {
+  std::fprintf(stderr,
+               "  [%s] estimate: at most about %s (%s, %d queries/iteration, up to %ld iterations; sew and drape end "
+               "earlier once sewn and settled)\n",
+               label.c_str(), format_duration(r.estimate_s).c_str(), scene.collider.c_str(), r.query_points,
+               r.iteration_budget);
+}
+
 RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   RunResult r;
   r.scene = scene.name;
   r.collider = scene.collider;
+  r.integrator = scene.solver.integrator;
+  r.regime = to_string(scene.solver.regime);
+  r.config_hash = config_hash(scene);
+  r.strain_threshold = scene.solver.limit == Limit::kNone ? 0 : double(scene.solver.threshold);
   // body, cloth, collider, simulator
   const BodySource source(scene);
   BodyFrame frame;
@@ -295,12 +403,25 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   r.dt_s = sim->dt();
   r.dt_bound_s = sim->stable_dt();
   r.dt_spectral_s = sim->spectral_dt();
+  // up front: how long it may take
+  const std::string label = options.label.empty() ? scene.name + "/" + scene.collider : options.label;
+  const Budget budget = iteration_budget(scene, source, *sim);
+  r.iteration_budget = budget.total();
+  if (options.progress || options.estimate_only)
+    r.estimate_s =
+        estimate_seconds(*sim, dresser ? *dresser : *collider, *collider, r.query_points, budget, r.setup_ms);
+  if (options.estimate_only || (options.progress && r.estimate_s > options.estimate_above_s))
+    print_estimate(label, scene, r);
+  if (options.estimate_only) return r;
   // sew -> drape -> animate
-  Progress progress(options.progress, options.label.empty() ? scene.name + "/" + scene.collider : options.label);
+  Progress progress(options.progress, label, *sim);
+  progress.plan(budget.total());
   sew(scene, *sim, progress, options.trace, r);
   // attachments (Durupinar 3.2) bind where sewing left the waistband, before gravity comes on
   if (!sim->mesh().attached.empty()) sim->attach(frame);
+  progress.plan(budget.drape + budget.animate);
   if (!sim->divergence()) drape(scene, *sim, progress, r.drape);
+  progress.plan(budget.animate);
   if (!sim->divergence())
     animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options, r);
   r.divergence = sim->divergence();
@@ -315,6 +436,20 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
 }
 
 }  // namespace
+
+std::string format_duration(double seconds) {
+  if (!std::isfinite(seconds)) return "?";
+  const long s = std::lround(std::max(0.0, seconds));
+  char buf[48];
+  if (s < 60) {
+    std::snprintf(buf, sizeof buf, "%ld s", s);
+  } else if (s < 3600) {
+    std::snprintf(buf, sizeof buf, "%ld min %ld s", s / 60, s % 60);
+  } else {
+    std::snprintf(buf, sizeof buf, "%ld h %02ld min", s / 3600, s / 60 % 60);
+  }
+  return buf;
+}
 
 RunResult run_scene(const Scene& scene, const RunOptions& options) {
   try {

@@ -13,7 +13,8 @@ namespace clothbench {
 
 /// The definitions every table prints in its header.
 inline constexpr const char* kDefinitions =
-    "iteration = one explicit Euler step of dt (Eq. 3) with detection, response and limits; "
+    "iteration = one step of dt of the scene's solver.integrator (explicit Euler, Eq. 3, unless stated) with detection, "
+    "response and limits; "
     "sewn = every seam pair closer than stop.sewn_gap_mm (or merged); "
     "settled = RMS cloth speed below stop.settle_speed for stop.settle_window_s of simulated time; "
     "times are wall clock on one thread, set-up (maps/BVH) excluded";
@@ -30,6 +31,11 @@ struct PhaseResult {
 /// What a run measured. Times in ms unless named otherwise.
 struct RunResult {
   std::string scene, collider;
+  std::string integrator, regime;  ///< solver.integrator and solver.regime of the run
+  std::string config_hash;      ///< config_hash of the scene as run (scene.hpp)
+  double strain_threshold = 0;  ///< solver.threshold when a super-elasticity limit was on, else 0
+  long iteration_budget = 0;    ///< most iterations the stop rule allows (phases end early at their goal)
+  double estimate_s = 0;        ///< simulation time estimated up front [s] (results never depend on it)
   int vertices = 0, query_points = 0;
   long body_triangles = 0;
   double dt_s = 0, dt_bound_s = 0, dt_spectral_s = 0;
@@ -71,7 +77,12 @@ struct RunOptions {
   bool trace = false;     ///< record the wall time of every sew iteration
   FrameCallback on_frame; ///< optional, per animation frame
   bool measure_frames = false;  ///< oracle accuracy at every animation frame (animate_*_max)
+  double estimate_above_s = 10; ///< with progress: print the estimate up front when it exceeds this [s]
+  bool estimate_only = false;   ///< print the estimate and return before the sew phase (nothing simulated)
 };
+
+/// "2 min 25 s", "12 s", "1 h 05 min": a duration for people.
+std::string format_duration(double seconds);
 
 /// Runs the scene with its collider. Throws InputError for bad input (files, parameters);
 /// a diverged simulation is reported in the result, not thrown.

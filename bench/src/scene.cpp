@@ -1,7 +1,10 @@
 // Scene files: TOML through toml++, every key checked, errors located at file:line.
 #include "scene.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -14,6 +17,35 @@
 namespace clothbench {
 
 namespace {
+
+// Levenshtein distance: single-character insertions, deletions and substitutions
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// " (did you mean `x`?)" for the nearest known name within a third of its length (at least 2
+// edits), else " (known: a, b, ...)"
+std::string suggestion(const std::string& name, const std::set<std::string>& known) {
+  std::string best, all;
+  std::size_t best_distance = std::max<std::size_t>(2, name.size() / 3) + 1;
+  for (const auto& k : known) {
+    all += (all.empty() ? "" : ", ") + k;
+    const std::size_t d = edit_distance(name, k);
+    if (d < best_distance && d < std::max(name.size(), k.size())) best = k, best_distance = d;
+  }
+  return best.empty() ? " (known: " + all + ")" : " (did you mean `" + best + "`?)";
+}
 
 // one table of the scene: typed reads that remember which keys were used
 class Section {
@@ -88,11 +120,14 @@ class Section {
     }
   }
 
-  // every key not read is an error: misspelt keys must not be silently ignored
+  // every key not read is an error: misspelt keys must not be silently ignored (every reader
+  // looks up all its keys, so used_ holds the known ones)
   void finish() const {
     if (!table_) return;
-    for (auto&& [key, node] : *table_)
-      if (!used_.count(std::string(key.str()))) fail(node, std::string(key.str()), "unknown key");
+    for (auto&& [key, node] : *table_) {
+      const std::string k(key.str());
+      if (!used_.count(k)) fail(node, k, "unknown key `" + k + "`" + suggestion(k, used_));
+    }
   }
 
   static std::string fmt(double v) {
@@ -136,16 +171,25 @@ void read_garment(Section s, GarmentSpec& g) {
 
 void read_material(Section s, Material& m) {
   s.number("density", m.density, 1e-4, 100);
-  s.number("k_structural", m.k_structural, 1e-3, 1e7);
+  s.number("k_structural", m.k_structural, 0, 1e7);  // 0 = automatic (the papers' regime)
   s.number("k_shear", m.k_shear, 0, 1e7);
   s.number("k_flexion", m.k_flexion, 0, 1e7);
-  s.number("damping", m.damping, 0, 1e3);
+  s.number("damping", m.damping, 0, 1e4);  // per unit mass [1/s]
   s.number("friction", m.friction, 0, 1);
   s.number("reflection", m.reflection, 0, 1);
   s.finish();
 }
 
+// [solver] regime: a preset applied before any key, so that every key given explicitly overrides it
+void apply_regime_key(Section s, Material& m, SolverParams& p) {
+  Regime regime = Regime::kStable;
+  s.choice("regime", [&](const std::string& v) { regime = parse_regime(v); });
+  apply_regime(regime, m, p);
+}
+
 void read_solver(Section s, SolverParams& p) {
+  s.choice("regime", [&](const std::string& v) { p.regime = parse_regime(v); });
+  s.choice("masses", [&](const std::string& v) { p.masses = parse_mass_model(v); });
   if (const toml::node* n = s.find("dt")) {
     if (n->value<std::string>() == std::optional<std::string>("auto")) {
       p.dt = 0;
@@ -159,6 +203,7 @@ void read_solver(Section s, SolverParams& p) {
   s.number("threshold", p.threshold, 1e-4, 10);
   s.number("stiff_factor", p.stiff_factor, 1, 1e4);
   s.number("limit_passes", p.limit_passes, 1, 1000);
+  s.flag("limit_after_response", p.limit_after_response);
   s.number("limit_speed", p.limit_speed, 0, 100);
   s.flag("face_queries", p.face_queries);
   s.flag("reaction_force", p.reaction_force);
@@ -170,6 +215,11 @@ void read_solver(Section s, SolverParams& p) {
   s.number("attraction_speed", p.attraction_speed, 0, 100);
   s.number("merge_distance", p.merge_distance, 0, 1);
   s.number("max_speed", p.max_speed, 1e-3, 1e6);
+  s.choice("integrator", [&](const std::string& v) { check_integrator(v), p.integrator = v; });
+  s.number("cg_tolerance", p.integration.cg_tolerance, 1e-7, 0.5);
+  s.number("cg_max_iterations", p.integration.cg_max_iterations, 1, 1e5);
+  s.number("rk_tol_x", p.integration.rk_tol_x, 1e-9, 1);
+  s.number("rk_tol_v", p.integration.rk_tol_v, 1e-9, 100);
   s.finish();
 }
 
@@ -233,11 +283,13 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
   s.path = file;
   s.name = std::filesystem::path(file).stem().string();
   const std::set<std::string> sections{"scene", "body", "garment", "material", "solver", "collider", "stop"};
-  for (auto&& [key, node] : root)
-    if (!sections.count(std::string(key.str())) || (key.str() != "garment" && !node.is_table()))
+  for (auto&& [key, node] : root) {
+    const std::string k(key.str());
+    if (!sections.count(k) || (k != "garment" && !node.is_table()))
       throw InputError(located(file, static_cast<int>(node.source().begin.line),
-                               "unknown section '" + std::string(key.str()) +
-                                   "' (sections: scene, body, [[garment]], material, solver, collider, stop)"));
+                               "unknown section '" + k + "'" + (sections.count(k) ? "" : suggestion(k, sections)) +
+                                   " (sections: scene, body, [[garment]], material, solver, collider, stop)"));
+  }
   Section head(root["scene"].as_table(), file, "scene");
   head.text("name", s.name);
   head.text("description", s.description);
@@ -254,6 +306,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
       s.garments.push_back(spec);
     }
   }
+  apply_regime_key(Section(root["solver"].as_table(), file, "solver"), s.material, s.solver);
   read_material(Section(root["material"].as_table(), file, "material"), s.material);
   read_solver(Section(root["solver"].as_table(), file, "solver"), s.solver);
   read_collider(Section(root["collider"].as_table(), file, "collider"), s);
@@ -261,7 +314,112 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
   return s;
 }
 
+// one `section.key = value` line; numbers with 17 significant digits (exact for float and double)
+class ConfigWriter {
+ public:
+  explicit ConfigWriter(std::string section) : section_(std::move(section)) {}
+  ConfigWriter& operator()(const char* key, double v) { return line(key, number(v)); }
+  ConfigWriter& operator()(const char* key, bool v) { return line(key, v ? "true" : "false"); }
+  ConfigWriter& operator()(const char* key, int v) { return line(key, std::to_string(v)); }
+  ConfigWriter& operator()(const char* key, long v) { return line(key, std::to_string(v)); }
+  ConfigWriter& operator()(const char* key, const std::string& v) { return line(key, quoted(v)); }
+  ConfigWriter& operator()(const char* key, const char* v) { return (*this)(key, std::string(v)); }
+  ConfigWriter& operator()(const char* key, const Vec3& v) {
+    return line(key, "[" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + "]");
+  }
+  std::string str() const { return text_.str(); }
+
+ private:
+  static std::string quoted(const std::string& v) {
+    std::string q = "\"";
+    for (const char c : v) q += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+    return q + "\"";
+  }
+  static std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+  }
+  template <class V>
+  ConfigWriter& line(const char* key, const V& value) {
+    text_ << section_ << "." << key << " = " << value << "\n";
+    return *this;
+  }
+  std::string section_;
+  std::ostringstream text_;
+};
+
+std::string body_config(const BodySpec& b) {
+  ConfigWriter w("body");
+  w("file", b.file)("animation", b.animation)("dress_at_s", b.dress_at_s)("start_s", b.start_s)("end_s", b.end_s);
+  w("walk_in_place", b.walk_in_place)("fps", b.fps)("shape", b.shape)("radius", double(b.radius));
+  w("center", b.center)("velocity", b.velocity)("move_s", b.move_s);
+  return w.str();
+}
+
+std::string garment_config(const GarmentSpec& g) {
+  ConfigWriter w("garment");
+  w("file", g.file)("vertices", g.vertices)("spacing_cm", g.spacing_cm)("attach", g.attach);
+  return w.str();
+}
+
+std::string material_config(const Material& m) {
+  ConfigWriter w("material");
+  w("density", double(m.density))("k_structural", double(m.k_structural))("k_shear", double(m.k_shear));
+  w("k_flexion", double(m.k_flexion))("damping", double(m.damping))("friction", double(m.friction));
+  w("reflection", double(m.reflection));
+  return w.str();
+}
+
+std::string solver_config(const SolverParams& p) {
+  ConfigWriter w("solver");
+  w("dt", double(p.dt))("dt_fraction", double(p.dt_fraction))("allow_unstable_dt", p.allow_unstable_dt);
+  w("masses", to_string(p.masses))("limit_after_response", p.limit_after_response);
+  w("limit", to_string(p.limit))("threshold", double(p.threshold))("stiff_factor", double(p.stiff_factor));
+  w("limit_passes", p.limit_passes)("limit_speed", double(p.limit_speed))("face_queries", p.face_queries);
+  w("reaction_force", p.reaction_force)("gravity", p.gravity)("seam_method", to_string(p.seam_method));
+  w("seam_stiffness", double(p.seam_stiffness))("seam_reach", double(p.seam_reach));
+  w("seam_speed", double(p.seam_speed))("attraction_speed", double(p.attraction_speed));
+  w("merge_distance", double(p.merge_distance))("max_speed", double(p.max_speed));
+  w("bounds_margin", double(p.bounds_margin));  // not a scene key, but it decides divergence
+  w("integrator", p.integrator)("cg_tolerance", double(p.integration.cg_tolerance));
+  w("cg_max_iterations", p.integration.cg_max_iterations)("rk_tol_x", double(p.integration.rk_tol_x));
+  w("rk_tol_v", double(p.integration.rk_tol_v));
+  return w.str();
+}
+
+std::string collider_config(const Scene& s) {
+  const ColliderOptions& o = s.collider_options;
+  ConfigWriter w("collider");
+  w("name", s.collider)("dress_with", s.dress_with)("tol", double(o.tol))("search_radius", double(o.search_radius));
+  w("map_size", o.map_size)("side_layer", o.side_layer)("fit_extent", o.fit_extent)("float_maps", o.float_maps);
+  w("max_speed", double(o.max_speed))("threads", o.threads);
+  return w.str();
+}
+
+std::string stop_config(const StopRule& r) {
+  ConfigWriter w("stop");
+  w("sew", r.sew)("sew_max_s", r.sew_max_s)("sewn_gap_mm", double(r.sewn_gap_mm))("drape_max_s", r.drape_max_s);
+  w("settle_speed", double(r.settle_speed))("settle_window_s", r.settle_window_s)("max_iterations", r.max_iterations);
+  return w.str();
+}
+
 }  // namespace
+
+std::string config_text(const Scene& scene) {
+  std::string text = body_config(scene.body);
+  for (const auto& g : scene.garments) text += garment_config(g);
+  return text + material_config(scene.material) + solver_config(scene.solver) + collider_config(scene) +
+         stop_config(scene.stop);
+}
+
+std::string config_hash(const Scene& scene) {
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64-bit offset basis
+  for (const unsigned char c : config_text(scene)) h = (h ^ c) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
 
 Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
   toml::table root;
@@ -287,15 +445,23 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 
 std::string resolve_scene_path(const Scene& scene, const std::string& ref) {
   namespace fs = std::filesystem;
-  if (ref == "debian:human") return kDebianHumanBody;
-  if (ref.rfind("data:", 0) == 0) return data_path(ref.substr(5));
+  if (ref == "debian:human" || ref.rfind("data:", 0) == 0) return resolve_data_reference(ref);
   const fs::path p(ref);
-  if (p.is_absolute()) return ref;
-  // scene-relative first, then the source tree's scenes/ folder
-  const fs::path beside = fs::path(scene.path).parent_path() / p;
   std::error_code ec;
-  if (!scene.path.empty() && fs::exists(beside, ec)) return beside.string();
-  return (fs::path(CLOTHBENCH_SOURCE_DIR) / "scenes" / p).string();
+  if (p.is_absolute()) {
+    if (!fs::exists(p, ec)) throw InputError(located(scene.path, 0, "file not found: " + ref));
+    return ref;
+  }
+  // scene-relative first, then the source tree's scenes/ folder
+  std::vector<fs::path> tried;
+  if (!scene.path.empty()) tried.push_back(fs::path(scene.path).parent_path() / p);
+  tried.push_back(fs::path(CLOTHBENCH_SOURCE_DIR) / "scenes" / p);
+  std::string looked;
+  for (const fs::path& candidate : tried) {
+    if (fs::exists(candidate, ec)) return candidate.string();
+    looked += (looked.empty() ? "" : ", ") + candidate.string();
+  }
+  throw InputError(located(scene.path, 0, "file not found: `" + ref + "` (looked in " + looked + ")"));
 }
 
 }  // namespace clothbench

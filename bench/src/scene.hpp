@@ -1,6 +1,7 @@
 #pragma once
 /// Scene files (TOML, documented in scenes/README.md): body and motion, garments, material,
-/// solver, collider, stop rule. Every field has a default; unknown keys are errors (file:line).
+/// solver, collider, stop rule. Every field has a default; unknown keys are errors (file:line, with
+/// the nearest known key of the table).
 #include <string>
 #include <vector>
 
@@ -68,8 +69,15 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 /// As load_scene, from text (`name` is used in messages and to resolve relative paths).
 Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides = {});
 
+/// The effective configuration: every field that decides a run (defaults included; not the name,
+/// description or path) as `section.key = value` lines in a fixed order, one block per garment.
+std::string config_text(const Scene& scene);
+/// FNV-1a 64-bit hash of config_text, 16 hex digits: equal for runs of the same configuration.
+std::string config_hash(const Scene& scene);
+
 /// Resolves a body or pattern reference of a scene ("debian:human", "data:REL", scene-relative,
-/// or relative to the source tree's scenes/ folder) to a path.
+/// or relative to the source tree's scenes/ folder) to an existing path; throws InputError naming
+/// every path it tried (for "data:", the data root and CLOTHBENCH_DATA) when there is none.
 std::string resolve_scene_path(const Scene& scene, const std::string& ref);
 
 }  // namespace clothbench

@@ -1,13 +1,21 @@
-// The clothbench command line: exit codes of bad input, run + JSON fields, compare, reproduce --quick.
+// The clothbench command line: exit codes of bad input, run + JSON fields, compare, reproduce --quick,
+// --version, help and listings, the accuracy verdict, the configuration hash, the time estimate.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
 
 #include "clothbench/config.h"
 #include "clothbench/io/data_root.hpp"
+#include "experiment.hpp"
+#include "registry.hpp"
+#include "report.hpp"
+#include "runner.hpp"
 
 namespace {
 
@@ -25,6 +33,14 @@ int clothbench(const std::string& args, const std::string& output = "/dev/null")
 std::string read(const std::string& path) {
   std::ifstream in(path);
   return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// the first line of `text` that starts with `prefix`, "" when none does
+std::string line_starting(const std::string& text, const std::string& prefix) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(prefix, 0) == 0) return line;
+  return "";
 }
 
 class Cli : public ::testing::Test {
@@ -110,6 +126,215 @@ TEST_F(Cli, CompareFlagsARegression) {
   EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "same.json").string()), 0);
   EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "slow.json").string()), 1);
   EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "slow.json").string() + " --threshold 60"), 0);
+}
+
+TEST_F(Cli, VersionPrintsTheVersionAndTheGitSha) {
+  const std::string log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("--version", log), 0);
+  const std::string sha = clothbench::git_sha();
+  EXPECT_EQ(read(log).rfind("clothbench " CLOTHBENCH_VERSION " (git " + sha.substr(0, sha.find('-')), 0), 0u)
+      << read(log);
+}
+
+TEST_F(Cli, ReproduceHelpListsEveryExperimentOfTheRegistry) {
+  const std::string log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("reproduce --help", log), 0);
+  const std::string help = read(log);
+  ASSERT_FALSE(clothbench::experiments().empty());
+  for (const auto& e : clothbench::experiments()) {
+    const std::string line = line_starting(help, "  " + e.id + " ");
+    EXPECT_FALSE(line.empty()) << e.id << " missing in\n" << help;
+    EXPECT_EQ(line.substr(line.find_first_not_of(' ', e.id.size() + 2)), e.title) << line;
+  }
+}
+
+TEST_F(Cli, CollidersPrintsAnAlignedTableOrJson) {
+  const std::string log = (dir_ / "log").string();
+  const auto colliders = clothbench::all_colliders();
+  ASSERT_EQ(clothbench("colliders", log), 0);
+  std::istringstream table(read(log));
+  std::string header;
+  std::getline(table, header);
+  EXPECT_EQ(header.rfind("name ", 0), 0u) << header;
+  const std::size_t built = header.find("built"), description = header.find("description");
+  ASSERT_NE(description, std::string::npos) << header;
+  for (const auto& c : colliders) {
+    std::string line;
+    ASSERT_TRUE(std::getline(table, line)) << c.name;
+    EXPECT_EQ(line.rfind(c.name + " ", 0), 0u) << line;
+    EXPECT_EQ(line.find_first_not_of(' ', c.name.size()), built) << line;
+    EXPECT_EQ(line.find(c.built ? "yes" : "no (-D" + c.option + "=ON)"), built) << line;
+    EXPECT_EQ(line.find(c.description), description) << line;
+  }
+  ASSERT_EQ(clothbench("colliders --json", log), 0);
+  const auto doc = nlohmann::json::parse(read(log));
+  ASSERT_EQ(doc.size(), colliders.size());
+  for (std::size_t i = 0; i < colliders.size(); ++i) {
+    EXPECT_EQ(doc[i]["name"], colliders[i].name);
+    EXPECT_EQ(doc[i]["built"], colliders[i].built);
+    EXPECT_EQ(doc[i]["option"], colliders[i].option);
+    EXPECT_EQ(doc[i]["description"], colliders[i].description);
+  }
+}
+
+TEST_F(Cli, UnknownSceneKeySuggestsTheNearestKnownKey) {
+  const std::string log = (dir_ / "log").string();
+  EXPECT_EQ(clothbench("run " + kScenes + "walking/tablecloth_sphere.toml --set garment.vertice=225", log), 2);
+  EXPECT_NE(read(log).find("garment.vertice (from --set): unknown key `vertice` (did you mean `vertices`?)"),
+            std::string::npos)
+      << read(log);
+  const std::string scene = (dir_ / "typo.toml").string();
+  std::ofstream(scene) << "[solver]\nthreshhold = 0.1\n";
+  EXPECT_EQ(clothbench("run " + scene, log), 2);
+  EXPECT_NE(read(log).find("typo.toml:2: solver.threshhold: unknown key `threshhold` (did you mean `threshold`?)"),
+            std::string::npos)
+      << read(log);
+}
+
+// a small run of the tablecloth on the analytic sphere: well under a second
+const std::string kSmallRun =
+    "walking/tablecloth_sphere.toml --set garment.vertices=225 --set body.move_s=0.05 "
+    "--set stop.drape_max_s=0.1";
+
+TEST_F(Cli, RunRecordsTheOverridesAndTheConfigHashAndCompareFlagsADifferentConfig) {
+  const std::string a = (dir_ / "a.json").string(), b = (dir_ / "b.json").string(), log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("run --quiet " + kScenes + kSmallRun + " --json " + a, log), 0) << read(log);
+  const auto doc = nlohmann::json::parse(read(a));
+  const auto& context = doc["context"];
+  EXPECT_EQ(context["scene"], kScenes + "walking/tablecloth_sphere.toml");
+  EXPECT_EQ(context["overrides"], nlohmann::json({"garment.vertices=225", "body.move_s=0.05", "stop.drape_max_s=0.1"}));
+  const std::string hash = context["config_hash"];
+  EXPECT_EQ(hash.size(), 16u);
+  EXPECT_EQ(doc["benchmarks"][0]["config_hash"], hash);
+  // the summary names them too
+  EXPECT_NE(read(log).find("--set garment.vertices=225 body.move_s=0.05 stop.drape_max_s=0.1; config " + hash),
+            std::string::npos)
+      << read(log);
+  // the same row with another setting: another hash, and compare does not judge it
+  ASSERT_EQ(clothbench("run --quiet " + kScenes + kSmallRun + " --set material.damping=0.003 --json " + b, log), 0);
+  const auto other = nlohmann::json::parse(read(b));
+  EXPECT_NE(other["context"]["config_hash"], hash);
+  ASSERT_EQ(other["benchmarks"][0]["name"], doc["benchmarks"][0]["name"]);
+  EXPECT_EQ(clothbench("compare " + a + " " + b + " --threshold 0", log), 0) << read(log);
+  EXPECT_NE(read(log).find("CONFIG DIFFERS (not judged)"), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find("warning: 1 row(s) ran with a different configuration"), std::string::npos) << read(log);
+  clothbench("compare " + a + " " + a, log);
+  EXPECT_EQ(read(log).find("CONFIG DIFFERS"), std::string::npos) << read(log);
+}
+
+TEST_F(Cli, CompareDoesNotJudgeRowsOfDifferentConfigurations) {
+  const auto write = [&](const std::string& name, double t, const std::string& hash) {
+    std::ofstream((dir_ / name).string())
+        << nlohmann::json{{"context", {}}, {"benchmarks", {{{"name", "a/b"}, {"real_time", t}, {"config_hash", hash}}}}}
+               .dump();
+  };
+  write("old.json", 1.0, "0000000000000001");
+  write("slow.json", 1.5, "0000000000000001");
+  write("other.json", 1.5, "0000000000000002");
+  const std::string old = (dir_ / "old.json").string(), log = (dir_ / "log").string();
+  EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "slow.json").string()), 1);
+  EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "other.json").string(), log), 0);
+  EXPECT_NE(read(log).find("CONFIG DIFFERS"), std::string::npos) << read(log);
+}
+
+// the verdict against the accuracy limits: in the summary (never "converged yes" alone), in the
+// JSON, and as exit code 4 under --strict
+TEST_F(Cli, RunPrintsTheAccuracyVerdictAndStrictExitsFourWhenTheLimitsAreMissed) {
+  const std::string json = (dir_ / "r.json").string(), log = (dir_ / "log").string();
+  const int rc = clothbench("run --quiet --strict " + kScenes + kSmallRun + " --json " + json, log);
+  const auto row = nlohmann::json::parse(read(json))["benchmarks"][0];
+  ASSERT_TRUE(row.contains("meets_limits") && row.contains("limit_misses")) << row.dump();
+  const bool meets = row["meets_limits"] == 1;
+  EXPECT_EQ(meets, row["limit_misses"].empty());
+  EXPECT_EQ(rc, meets ? 0 : 4) << read(log);
+  std::string misses;
+  for (const auto& m : row["limit_misses"]) misses += (misses.empty() ? "" : ", ") + m.get<std::string>();
+  const std::string verdict = line_starting(read(log), "  converged ");
+  EXPECT_NE(verdict.find(meets ? "; accuracy: meets the limits (inside <= 0.5 %, depth <= 5 mm, crossings <= 1 %"
+                               : "; accuracy: MISSES the limits: " + misses),
+            std::string::npos)
+      << read(log);
+  // without --strict the same run exits 0
+  EXPECT_EQ(clothbench("run --quiet " + kScenes + kSmallRun, log), 0);
+}
+
+TEST(Limits, MissesNameTheValueAndTheLimit) {
+  clothbench::RunResult r;
+  EXPECT_TRUE(clothbench::limit_misses(r).empty());
+  r.accuracy.inside_pct = 6.1;
+  r.accuracy.crossings_pct = 1.94;
+  r.accuracy.depth_max_mm = 5;  // at the limit: meets it
+  EXPECT_EQ(clothbench::limit_misses(r), (std::vector<std::string>{"inside 6.1 % > 0.5 %", "crossings 1.94 % > 1 %"}));
+  r = {};
+  r.strain_threshold = 0.1;
+  r.strain_max = 0.2;
+  r.seam_gap_max_mm = NAN;
+  EXPECT_EQ(clothbench::limit_misses(r), (std::vector<std::string>{"seam gap - mm > 2 mm", "strain 20 % > 11 %"}));
+  EXPECT_EQ(clothbench::limit_misses(r, false), (std::vector<std::string>{"seam gap - mm > 2 mm"}));
+  EXPECT_EQ(clothbench::limits_text(r),
+            "inside <= 0.5 %, depth <= 5 mm, crossings <= 1 %, seam gap <= 2 mm, strain <= 11 %");
+  r.strain_threshold = 0;  // no super-elasticity limit: no strain limit
+  EXPECT_EQ(clothbench::limits_text(r), "inside <= 0.5 %, depth <= 5 mm, crossings <= 1 %, seam gap <= 2 mm");
+  r.divergence = clothbench::Divergence{};
+  EXPECT_EQ(clothbench::limit_misses(r), std::vector<std::string>{"diverged"});
+}
+
+// "estimate: at most about 2 min 25 s (brute, 1234 queries/iteration, up to 7000 iterations; ..."
+const std::regex kEstimate(R"(estimate: at most about (\d+ h \d\d min|(\d+ min )?\d+ s) )"
+                           R"(\(brute, \d+ queries/iteration, up to \d+ iterations;)");
+
+TEST_F(Cli, RunEstimatePrintsTheEstimateAndSimulatesNothing) {
+  const std::string log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("run --quiet --estimate --collider brute " + kScenes + kSmallRun, log), 0) << read(log);
+  EXPECT_TRUE(std::regex_search(read(log), kEstimate)) << read(log);
+  EXPECT_EQ(read(log).find("accuracy"), std::string::npos) << read(log);
+}
+
+// progress lines (after the first second, once a second) carry an ETA
+TEST_F(Cli, ProgressLinesCarryAnEta) {
+  const std::string log = (dir_ / "log").string();
+  // brute force on the tablecloth: about 30 ms per iteration here, 120 iterations (the drape never settles)
+  ASSERT_EQ(clothbench("run --collider brute " + kScenes +
+                           "walking/tablecloth_sphere.toml --set garment.vertices=400 --set body.move_s=0 "
+                           "--set stop.drape_max_s=100 --set stop.settle_speed=0 --set stop.max_iterations=120",
+                       log),
+            0);
+  const std::string progress = line_starting(read(log), "  [tablecloth-sphere/brute ");
+  ASSERT_FALSE(progress.empty()) << read(log);
+  EXPECT_TRUE(std::regex_search(
+      progress, std::regex(R"(^  \[tablecloth-sphere/brute \d+ s, ETA <= (\d+ h \d\d min|(\d+ min )?\d+ s|\?)\] )")))
+      << progress;
+}
+
+TEST(Estimate, DurationsForPeople) {
+  EXPECT_EQ(clothbench::format_duration(0.4), "0 s");
+  EXPECT_EQ(clothbench::format_duration(12.4), "12 s");
+  EXPECT_EQ(clothbench::format_duration(145), "2 min 25 s");
+  EXPECT_EQ(clothbench::format_duration(3725), "1 h 02 min");
+  EXPECT_EQ(clothbench::format_duration(NAN), "?");
+}
+
+// a run prints its estimate up front when it exceeds estimate_above_s; the results do not depend
+// on it (it steps a copy of the simulator and queries the collider), with any collider
+TEST(Estimate, PrintedUpFrontAndTheResultsDoNotDependOnIt) {
+  for (const std::string& collider : clothbench::available_colliders()) {
+    const clothbench::Scene scene = clothbench::load_scene(
+        kScenes + "walking/tablecloth_sphere.toml",
+        {"garment.vertices=225", "body.move_s=0.05", "stop.drape_max_s=0.1", "collider.name=" + collider});
+    clothbench::RunOptions quiet, loud;
+    quiet.progress = false;
+    loud.estimate_above_s = 0;
+    const clothbench::RunResult a = clothbench::run_scene(scene, quiet);
+    testing::internal::CaptureStderr();
+    const clothbench::RunResult b = clothbench::run_scene(scene, loud);
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("[tablecloth-sphere/" + collider + "] estimate: at most about "), std::string::npos) << err;
+    EXPECT_GT(b.estimate_s, 0) << collider;
+    EXPECT_EQ(a.iteration_budget, b.iteration_budget) << collider;
+    ASSERT_EQ(a.iterations(), b.iterations()) << collider;
+    ASSERT_EQ(a.mesh.positions.size(), b.mesh.positions.size());
+    EXPECT_TRUE(a.mesh.positions == b.mesh.positions) << collider << ": bit-identical with and without the estimate";
+  }
 }
 
 }  // namespace

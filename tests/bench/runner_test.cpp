@@ -65,5 +65,18 @@ TEST(Runner, DivergenceIsReportedNotThrown) {
   EXPECT_FALSE(r.converged);
 }
 
+// the scene a new user runs first (README) ends sewn and settled with no skin showing through:
+// nothing inside the body, no structural spring crossing it, every seam closed
+TEST(Runner, TheFirstStaticSceneEndsDressedWithNoSkinShowing) {
+  RunOptions quiet;
+  quiet.progress = false;
+  const RunResult r = run_scene(load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/dressing/skirt.toml"), quiet);
+  ASSERT_FALSE(r.divergence);
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(r.accuracy.inside_pct, 0.5);
+  EXPECT_LE(r.accuracy.crossings_pct, 0.5);
+  EXPECT_LE(r.seam_gap_max_mm, 2.0);
+}
+
 }  // namespace
 }  // namespace clothbench

@@ -99,6 +99,49 @@ TEST(Scene, SetOverridesAndItsErrors) {
   EXPECT_NE(error_of("", {"solver.threshold=abc"}).find("expected a number"), std::string::npos);
 }
 
+// a misspelt key names the nearest known key of its table, in a file and through --set
+TEST(Scene, UnknownKeySuggestsTheNearestKnownKey) {
+  const std::string file = error_of("[[garment]]\nfile = \"a.pattern\"\nvertice = 5\n");
+  EXPECT_NE(file.find("s.toml:3: garment.vertice: unknown key `vertice` (did you mean `vertices`?)"), std::string::npos)
+      << file;
+  EXPECT_NE(error_of("[solver]\nthreshhold = 0.1\n").find("(did you mean `threshold`?)"), std::string::npos);
+  EXPECT_NE(error_of("[collider]\nmapsize = 64\n").find("(did you mean `map_size`?)"), std::string::npos);
+  const std::string set = error_of("[[garment]]\nfile = \"a.pattern\"\n", {"garment.vertice=5"});
+  EXPECT_NE(set.find("garment.vertice (from --set): unknown key `vertice` (did you mean `vertices`?)"),
+            std::string::npos)
+      << set;
+  // nothing close: the known keys of that table
+  const std::string far = error_of("", {"stop.nope=1"});
+  EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
+  EXPECT_NE(far.find("(known: drape_max_s, max_iterations, "), std::string::npos) << far;
+  EXPECT_NE(error_of("[bodyy]\n").find("unknown section 'bodyy' (did you mean `body`?)"), std::string::npos);
+}
+
+// the hash of the effective configuration: what the values are, not how the file spells them
+TEST(Scene, ConfigHashFollowsTheEffectiveConfiguration) {
+  const std::string text = "[[garment]]\nfile = \"a.pattern\"\nvertices = 400\n[solver]\nthreshold = 0.05\n";
+  const Scene base = parse_scene(text, "s.toml");
+  const std::string hash = config_hash(base);
+  EXPECT_EQ(hash.size(), 16u);
+  EXPECT_EQ(hash.find_first_not_of("0123456789abcdef"), std::string::npos) << hash;
+  // the same values: another file name, a name, keys in another order, a default spelt out, --set to the same value
+  EXPECT_EQ(config_hash(parse_scene(text, "other.toml")), hash);
+  EXPECT_EQ(config_hash(parse_scene("[scene]\nname = \"x\"\n[solver]\nthreshold = 0.05\nlimit = \"velocity\"\n"
+                                    "[[garment]]\nvertices = 400\nfile = \"a.pattern\"\n",
+                                    "s.toml")),
+            hash);
+  EXPECT_EQ(config_hash(parse_scene(text, "s.toml", {"garment.vertices=400"})), hash);
+  // any field of any section changes it
+  for (const char* set : {"body.fps=30", "garment.vertices=401", "material.density=0.2", "solver.threshold=0.06",
+                          "solver.face_queries=true", "collider.name=brute", "collider.map_size=512",
+                          "stop.drape_max_s=0.5", "stop.max_iterations=10"})
+    EXPECT_NE(config_hash(parse_scene(text, "s.toml", {set})), hash) << set;
+  Scene with_collider = base;
+  with_collider.collider = "embree";  // `run --collider` after loading
+  EXPECT_NE(config_hash(with_collider), hash);
+  EXPECT_NE(config_text(base).find("garment.vertices = 400\n"), std::string::npos) << config_text(base);
+}
+
 TEST(Scene, MissingFileAndPathResolution) {
   EXPECT_THROW(load_scene("/nonexistent/scene.toml"), InputError);
   Scene s;
