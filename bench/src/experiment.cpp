@@ -140,6 +140,7 @@ const std::vector<Experiment>& experiments() {
     add_dressing_experiments(e);
     add_walking_experiments(e);
     add_durupinar_experiments(e);
+    add_integrator_experiments(e);
     add_stability_experiments(e);
     add_pareto_experiments(e);
     add_picture_experiments(e);

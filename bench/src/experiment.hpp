@@ -76,6 +76,7 @@ const std::vector<Experiment>& experiments();
 void add_dressing_experiments(std::vector<Experiment>& out);
 void add_walking_experiments(std::vector<Experiment>& out);
 void add_durupinar_experiments(std::vector<Experiment>& out);
+void add_integrator_experiments(std::vector<Experiment>& out);
 void add_picture_experiments(std::vector<Experiment>& out);
 void add_stability_experiments(std::vector<Experiment>& out);
 void add_claims_experiments(std::vector<Experiment>& out);
