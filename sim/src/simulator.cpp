@@ -230,6 +230,9 @@ bool Simulator::step() {
   const ForceModel model = force_model();
   model.eval(x_, v_, f_);
   integrator_->advance(model, dt_, x_, f_, v_, drift_);
+  // limits, seam caps and the response act on the velocity that moves the points over the step
+  const bool drifts = drift_.cols() == x_.cols();
+  if (drifts) v_ += drift_ / dt_;
   limit_velocities();
   if (params_.seam_method == SeamMethod::kElastic) cap_seam_speeds();
   if (phase_ == Phase::kSew && params_.seam_method == SeamMethod::kAttraction) attract_seams();
@@ -240,6 +243,7 @@ bool Simulator::step() {
   cs.restart();
   if (params_.limit_after_response && collider_) limit_after_response();
   integrate_positions();
+  if (drifts) v_ -= drift_ / dt_;  // back to the end-of-step velocity, with what limits and response changed
   limit_positions();
   merge_seams();
   cs_ms += cs.ms();
@@ -354,9 +358,8 @@ void Simulator::limit_after_response() {
 }
 
 void Simulator::integrate_positions() {
-  // dressing Eq. 3: p += dt v (and what the integrator moved besides: rk45)
+  // dressing Eq. 3: p += dt v (for rk45, v is the step's mean velocity here: its drift is folded in)
   x_ += dt_ * v_;
-  if (drift_.cols() == x_.cols()) x_ += drift_;
 }
 
 void Simulator::merge_seams() {

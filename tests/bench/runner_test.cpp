@@ -78,5 +78,18 @@ TEST(Runner, TheFirstStaticSceneEndsDressedWithNoSkinShowing) {
   EXPECT_LE(r.seam_gap_max_mm, 2.0);
 }
 
+// rk45 moves points by more than h v_end (its drift): the limits, seam caps and the response must see that
+// displacement, or the seams fling vertices off (it diverged at iteration 98 when they did not)
+TEST(Runner, Rk45SewsAndDrapesTheSkirtWithoutDiverging) {
+  RunOptions quiet;
+  quiet.progress = false;
+  const RunResult r = run_scene(load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/dressing/skirt.toml",
+                                           {"garment.vertices=336", "solver.integrator=rk45"}),
+                                quiet);
+  ASSERT_FALSE(r.divergence) << r.divergence->reason;
+  EXPECT_TRUE(r.sew.reached);
+  EXPECT_LE(r.accuracy.inside_pct, 0.5);
+}
+
 }  // namespace
 }  // namespace clothbench

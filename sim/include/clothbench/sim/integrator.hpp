@@ -53,7 +53,8 @@ struct IntegratorParams {
 
 /// One iteration's update of velocities and positions: on return v holds the end-of-step velocities and
 /// `drift` what the positions move besides h v (x_end = x + h v + drift; zero for the Euler steps, where
-/// x_end = x + h v_end). The Simulator then limits and responds on v and moves x by h v + drift.
+/// x_end = x + h v_end). The Simulator limits and responds on the step's mean velocity v + drift / h (so they
+/// see the whole displacement), moves x by h times it, then subtracts drift / h again.
 class Integrator {
  public:
   virtual ~Integrator() = default;
