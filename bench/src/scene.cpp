@@ -188,7 +188,7 @@ void apply_regime_key(Section s, Material& m, SolverParams& p) {
 }
 
 void read_solver(Section s, SolverParams& p) {
-  s.choice("regime", [&](const std::string& v) { p.regime = parse_regime(v); });
+  s.choice("regime", [](const std::string&) {});  // applied first (apply_regime_key); read here as a known key
   s.choice("masses", [&](const std::string& v) { p.masses = parse_mass_model(v); });
   if (const toml::node* n = s.find("dt")) {
     if (n->value<std::string>() == std::optional<std::string>("auto")) {

@@ -113,6 +113,14 @@ void validate(const Material& m, const SolverParams& p) {
 // column i of a 3 x n matrix as a fixed-size vector reference
 inline Eigen::Ref<Vec3> col(Points3& m, Eigen::Index i) { return m.col(i); }
 
+// Gershgorin's row sums of M^-1 K: a spring of stiffness k between a and b adds k / m_a + k / sqrt(m_a m_b)
+// to row a and the mirrored terms to row b
+void add_gershgorin(Scalars& row, const Scalars& m, int a, int b, Real k) {
+  const Real cross = k / std::sqrt(m[a] * m[b]);
+  row[a] += k / m[a] + cross;
+  row[b] += k / m[b] + cross;
+}
+
 }  // namespace
 
 Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParams& params)
@@ -159,10 +167,7 @@ void Simulator::set_stiffness() {
     const Eigen::Index nv = m_.size();
     Scalars fixed = Scalars::Zero(nv), scaled = Scalars::Zero(nv);
     const auto add = [&](int a, int b, Real k, bool automatic) {
-      Scalars& row = automatic ? scaled : fixed;
-      const Real cross = k / std::sqrt(m_[a] * m_[b]);
-      row[a] += k / m_[a] + cross;
-      row[b] += k / m_[b] + cross;
+      add_gershgorin(automatic ? scaled : fixed, m_, a, b, k);
     };
     for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
       const int kind = static_cast<int>(mesh_.kind[s]);
@@ -208,15 +213,11 @@ Real Simulator::stable_dt() const {
 Real Simulator::spectral_dt() const {
   // Gershgorin: omega^2 <= max_v sum_s k_s (1/m_v + 1/sqrt(m_v m_u)) over the springs s = (v, u)
   Scalars row = Scalars::Zero(m_.size());
-  const auto add = [&](int a, int b, Real k) {
-    const Real cross = k / std::sqrt(m_[a] * m_[b]);
-    row[a] += k / m_[a] + cross;
-    row[b] += k / m_[b] + cross;
-  };
-  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) add(mesh_.springs(0, s), mesh_.springs(1, s), k_[s]);
+  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s)
+    add_gershgorin(row, m_, mesh_.springs(0, s), mesh_.springs(1, s), k_[s]);
   if (params_.seam_method == SeamMethod::kElastic)
     for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
-      add(mesh_.seam_pairs(0, p), mesh_.seam_pairs(1, p), seam_k_[p]);
+      add_gershgorin(row, m_, mesh_.seam_pairs(0, p), mesh_.seam_pairs(1, p), seam_k_[p]);
   const Real omega2 = row.size() ? row.maxCoeff() : Real(0);
   return omega2 > 0 ? Real(2) / std::sqrt(omega2) : Real(1e-2);
 }

@@ -9,6 +9,7 @@
 
 #include "clothbench/sim/simulator.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
+#include "two_particles.hpp"
 
 namespace clothbench {
 namespace {
@@ -18,19 +19,7 @@ namespace {
 constexpr double kMass = 0.01, kK = 4, kRest = 0.1, kStretch = 0.01;
 
 Simulator two_particles(const std::string& integrator, Real dt, IntegratorParams ip = {}) {
-  ClothMesh c;
-  c.positions.resize(3, 2);
-  c.positions.col(0) = Vec3(0, 0, 0);
-  c.positions.col(1) = Vec3(Real(kRest + kStretch), 0, 0);
-  c.vertex_area = Scalars::Constant(2, 1);
-  c.springs.resize(2, 1);
-  c.springs << 0, 1;
-  c.rest_length = Scalars::Constant(1, Real(kRest));
-  c.kind = {SpringKind::kStructural};
-  c.quads.resize(4, 0);
-  c.seam_pairs.resize(2, 0);
-  c.panel = {0, 0};
-  c.panel_names = {"pair"};
+  const ClothMesh c = test::two_particles(Real(kRest), Real(kStretch));
   Material m;
   m.density = Real(kMass);
   m.k_structural = Real(kK);

@@ -10,27 +10,11 @@
 
 #include "clothbench/sim/sphere_collider.hpp"
 #include "test_support.hpp"
+#include "two_particles.hpp"
 
 namespace clothbench {
 namespace {
 
-// two free particles of mass m joined by one spring of stiffness k, stretched by `stretch`
-ClothMesh two_particles(Real rest, Real stretch) {
-  ClothMesh c;
-  c.positions.resize(3, 2);
-  c.positions.col(0) = Vec3(0, 0, 0);
-  c.positions.col(1) = Vec3(rest + stretch, 0, 0);
-  c.vertex_area = Scalars::Constant(2, 1);
-  c.springs.resize(2, 1);
-  c.springs << 0, 1;
-  c.rest_length = Scalars::Constant(1, rest);
-  c.kind = {SpringKind::kStructural};
-  c.quads.resize(4, 0);
-  c.seam_pairs.resize(2, 0);
-  c.panel = {0, 0};
-  c.panel_names = {"pair"};
-  return c;
-}
 
 // a horizontal square cloth of n x n vertices, `size` metres wide, pinned at its two far corners
 ClothMesh pinned_square(int n, Real size) {
@@ -59,7 +43,7 @@ TEST(Simulator, TwoParticleSpringPeriodMatchesTheory) {
   p.gravity = Vec3::Zero();
   p.limit = Limit::kNone;
   p.dt = 1e-4f;
-  Simulator sim(two_particles(0.1f, 0.01f), mat, p);
+  Simulator sim(test::two_particles(0.1f, 0.01f), mat, p);
   // relative coordinate oscillates with omega = sqrt(2k/m)
   const double omega = std::sqrt(2 * 4 / 0.01), period = 2 * M_PI / omega;
   std::vector<double> up_crossings;
@@ -90,7 +74,7 @@ bool runs_stably(Real dt_multiple, int steps) {
 
 // two free particles, the second `ratio` times lighter, sewn together across `gap` [m]
 ClothMesh seam_pair(Real gap, Real ratio) {
-  ClothMesh c = two_particles(gap, 0);
+  ClothMesh c = test::two_particles(gap, 0);
   c.vertex_area << 1, 1 / ratio;
   c.springs.resize(2, 0);
   c.rest_length.resize(0);
@@ -162,7 +146,7 @@ TEST(Simulator, SeamsMeetingAtOnePointMoveAsOne) {
   // a sleeve, a front and a back meet at the armpit: pairs (0, 1) and (2, 1) chain, and once merged the
   // three vertices are one point with the mass-weighted mean velocity (momentum kept). Merging the pairs
   // one after the other left vertex 0 behind, pulled apart again every step, at metres per second
-  ClothMesh c = two_particles(0.001f, 0);
+  ClothMesh c = test::two_particles(0.001f, 0);
   c.positions.conservativeResize(3, 3);
   c.positions.col(2) = Vec3(0.0015f, 0, 0);
   c.vertex_area.resize(3);
@@ -204,7 +188,7 @@ TEST(Simulator, LimitsShortenAnOverStretchedSpringAtLimitSpeed) {
       p.limit = limit;
       p.limit_speed = limit_speed;
       p.dt = 1e-4f;
-      Simulator sim(two_particles(0.1f, 0.05f), mat, p);
+      Simulator sim(test::two_particles(0.1f, 0.05f), mat, p);
       ASSERT_TRUE(sim.step());
       const double spring_only = mat.k_structural * 0.05 * sim.dt() * 2 / sim.masses()[0];
       const double closing = (sim.velocities().col(0) - sim.velocities().col(1)).x();
