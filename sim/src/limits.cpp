@@ -1,8 +1,8 @@
 // Super-elasticity limits (dressing section 4, walking section 3): velocity, directional and
 // position (Provot) corrections of over-stretched springs.
 // Our reading of the velocity limits: a spring whose next length (Eq. 3) would pass (1 + threshold) l0
-// keeps the relative velocity along it that ends the step at exactly that length; one already past it
-// is shortened at limit_speed at most. Directional: springs
+// keeps the relative velocity along its end-of-step line that ends the step at exactly that length; one
+// already past it is shortened at limit_speed at most. A pass sweeps the springs from the held vertices out. Directional: springs
 // perpendicular to v_dir average (Eq. 5); on the others the rear point catches up with the front one,
 // except that a held rear point (attached, in contact, or already following one) makes the front follow
 // it, and catching up that would add kinetic energy to the pair averages instead.
@@ -58,7 +58,7 @@ std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real
   }
 }
 
-void Simulator::limit_velocities() {
+void Simulator::limit_velocities(bool contacts_stop_inward) {
   const Limit l = params_.limit;
   if (l != Limit::kVelocity && l != Limit::kVelocityZero && l != Limit::kDirectional) return;
   const Real max_len_factor = 1 + params_.threshold;
@@ -67,8 +67,50 @@ void Simulator::limit_velocities() {
   held_.assign(static_cast<std::size_t>(x_.cols()), 0);
   for (Eigen::Index i = 0; i < x_.cols(); ++i)
     held_[i] = inv_m_[i] == 0 || (!contacts_.empty() && contacts_[static_cast<std::size_t>(i)].hit);
-  for (int pass = 0; pass < params_.limit_passes; ++pass)
-    for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) limit_spring(l, max_len_factor, v_grav, s);
+  order_springs_from_held();
+  for (int pass = 0; pass < params_.limit_passes; ++pass) {
+    for (int s : spring_order_) limit_spring(l, max_len_factor, v_grav, s);
+    move_merged_as_one(false);  // a sewn point is one point to the limit too
+    if (contacts_stop_inward) stop_inward_contacts();
+  }
+}
+
+void Simulator::order_springs_from_held() {
+  // a Gauss-Seidel sweep converges in one pass along a chain swept from its support: springs in order of
+  // their nearer end's hops from a held vertex (breadth first; springs out of reach of any keep their order last)
+  const std::size_t nv = held_.size();
+  std::vector<int> level(nv, -1), queue;
+  queue.reserve(nv);
+  for (std::size_t i = 0; i < nv; ++i)
+    if (held_[i]) level[i] = 0, queue.push_back(static_cast<int>(i));
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const int i = queue[q];
+    for (int k = adj_start_[static_cast<std::size_t>(i)]; k < adj_start_[static_cast<std::size_t>(i) + 1]; ++k) {
+      int& l = level[static_cast<std::size_t>(adj_[static_cast<std::size_t>(k)])];
+      if (l < 0) l = level[static_cast<std::size_t>(i)] + 1, queue.push_back(adj_[static_cast<std::size_t>(k)]);
+    }
+  }
+  const int unreached = queue.empty() ? 0 : level[static_cast<std::size_t>(queue.back())] + 1;
+  const auto spring_level = [&](Eigen::Index s) {
+    const int a = level[static_cast<std::size_t>(mesh_.springs(0, s))], b = level[static_cast<std::size_t>(mesh_.springs(1, s))];
+    return a < 0 || b < 0 ? std::max({a, b, unreached}) : std::min(a, b);
+  };
+  std::vector<int> count(static_cast<std::size_t>(unreached) + 2, 0);
+  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) ++count[static_cast<std::size_t>(spring_level(s)) + 1];
+  for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
+  spring_order_.resize(static_cast<std::size_t>(mesh_.springs.cols()));
+  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s)
+    spring_order_[static_cast<std::size_t>(count[static_cast<std::size_t>(spring_level(s))]++)] = static_cast<int>(s);
+}
+
+void Simulator::stop_inward_contacts() {
+  // a vertex in contact may slide along the body or leave it, never move into it relative to it
+  for (Eigen::Index i = 0; i < x_.cols(); ++i) {
+    const Contact& c = contacts_[static_cast<std::size_t>(i)];
+    if (!c.hit || inv_m_[i] == 0) continue;
+    const Real vn = (v_.col(i) - c.body_velocity).dot(c.normal);
+    if (vn < 0) v_.col(i) -= vn * c.normal;
+  }
 }
 
 void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s) {
@@ -77,23 +119,19 @@ void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, E
   const Vec3 d = x_.col(b) - x_.col(a);  // p12 = p2 - p1
   const Vec3 dv = v_.col(b) - v_.col(a);
   const Real max_len = max_len_factor * mesh_.rest_length[s];
-  if (!((d + dt_ * dv).norm() > max_len)) return;
-  const Real len = d.norm();
-  if (!(len > 0)) return;
-  const Vec3 u = d / len;
+  // split along the spring's line as it would end the step (the papers' line p1p2 when it does not turn):
+  // keeping the relative velocity along it that ends the step at the allowed length is then the nearest
+  // allowed motion, however fast the spring turns, so passes over all springs converge
+  const Vec3 d_end = d + dt_ * dv;
+  const Real len_end = d_end.norm(), len = d.norm();
+  if (!(len_end > max_len) || !(len > 0)) return;
+  const Vec3 u = d_end / len_end;
   const Real va = v_.col(a).dot(u), vb = v_.col(b).dot(u);
-  // the relative velocity along the spring that ends the step at exactly max_len, the perpendicular
-  // motion included (zero leaves a spring already past it there, and rotation lengthens it every step)
-  const Real perp2 = (dv - (vb - va) * u).squaredNorm() * dt_ * dt_;
   // a spring already past max_len (pinched between two moving body parts, dragged by the response,
   // stretched when a seam merged) keeps its length but for limit_speed dt: shortening it by all of the
   // excess in one step takes excess/dt (12 mm at dt 0.16 ms is 80 m/s), a speed that outlives the step
-  const Real hold = std::max(max_len, len);
-  const Real shorten = std::min(len - max_len, params_.limit_speed * dt_);
-  const Real target =
-      l == Limit::kVelocityZero
-          ? Real(0)
-          : (std::sqrt(std::max(hold * hold - perp2, Real(0))) - len - std::max(shorten, Real(0))) / dt_;
+  const Real allowed = std::max(max_len, len) - std::max(std::min(len - max_len, params_.limit_speed * dt_), Real(0));
+  const Real target = l == Limit::kVelocityZero ? Real(0) : (allowed - d.dot(u)) / dt_;
   if (vb - va <= target) return;  // only further elongation is forbidden: a spring may shorten
   if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
   Real na = va, nb = vb;

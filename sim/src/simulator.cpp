@@ -42,9 +42,14 @@ void apply_regime(Regime regime, Material& material, SolverParams& params) {
   // the papers' clock: equal point masses (dressing Eq. 3), dt 5 ms, springs soft enough for it (automatic)
   params.masses = papers ? MassModel::kEqual : stable.masses;
   params.dt = papers ? Real(0.005) : stable.dt;
-  params.limit = stable.limit;  // velocity modification (walking Eq. 5) carries the stretch
+  // velocity modification carries the stretch: the walking paper's directional limit (Eq. 6), four passes
+  // over the springs after the forces and four again after the response (with the contacts), held points first
+  params.limit = papers ? Limit::kDirectional : stable.limit;
+  params.limit_passes = papers ? 4 : stable.limit_passes;
   params.seam_stiffness = stable.seam_stiffness;
   params.limit_after_response = papers;
+  // soft seams close slowly over their last millimetres: pairs within 5 mm are sewn (2 mm stable)
+  params.merge_distance = papers ? Real(0.005) : stable.merge_distance;
   // soft seams pull k |d| up to a 5 cm gap (5 mm with the stable regime's stiff ones): about the stable pull
   params.seam_reach = papers ? Real(0.05) : stable.seam_reach;
   material.k_structural = papers ? Real(0) : stable_material.k_structural;
@@ -140,6 +145,7 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   mid_.resize(3, mesh_.quads.cols());
   merged_.assign(static_cast<std::size_t>(mesh_.seam_pairs.cols()), 0);
   start_box_ = bounding_box(x_);
+  build_adjacency();
   // time step: given (explicit Euler's checked against Eq. 4), or the integrator's automatic one
   const Real bound = stable_dt();
   if (params_.dt == 0) {
@@ -150,6 +156,24 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
                                 " s of dressing Eq. 4 (0.4 pi sqrt(m/K)); set allow_unstable_dt to run it anyway");
   } else {
     dt_ = params_.dt;
+  }
+}
+
+void Simulator::build_adjacency() {
+  // every spring and seam pair, both ways, as compressed rows
+  const Eigen::Index nv = mesh_.positions.cols();
+  std::vector<std::pair<int, int>> edges;
+  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) edges.emplace_back(mesh_.springs(0, s), mesh_.springs(1, s));
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
+    edges.emplace_back(mesh_.seam_pairs(0, p), mesh_.seam_pairs(1, p));
+  adj_start_.assign(static_cast<std::size_t>(nv + 1), 0);
+  for (const auto& [a, b] : edges) ++adj_start_[static_cast<std::size_t>(a + 1)], ++adj_start_[static_cast<std::size_t>(b + 1)];
+  for (std::size_t i = 1; i < adj_start_.size(); ++i) adj_start_[i] += adj_start_[i - 1];
+  adj_.resize(static_cast<std::size_t>(adj_start_.back()));
+  std::vector<int> fill(adj_start_.begin(), adj_start_.end() - 1);
+  for (const auto& [a, b] : edges) {
+    adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
+    adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
   }
 }
 
@@ -324,7 +348,10 @@ void Simulator::respond() {
   std::vector<int> face_count;
   for (Eigen::Index i = 0; i < nv; ++i) {
     const Contact& c = contacts_[static_cast<std::size_t>(i)];
-    if (c.hit && inv_m_[i] > 0) col(v_, i) = resolve(v_.col(i), c);
+    if (!c.hit || inv_m_[i] == 0) continue;
+    col(v_, i) = resolve(v_.col(i), c);
+    // Durupinar Eq. 3: a point that has passed beneath the surface is brought back to it along the normal
+    if (params_.push_out && c.depth < 0) col(x_, i) -= c.depth * c.normal;
   }
   if (!params_.face_queries) return;
   // face-body: the quad midpoint's response goes to its four vertices, averaged (dressing section 6),
@@ -350,12 +377,9 @@ void Simulator::respond() {
 }
 
 void Simulator::limit_after_response() {
-  // the velocity limit again, the body's contacts held like attached vertices (1/m = 0 for the pass)
-  const Scalars inv_m = inv_m_;
-  for (Eigen::Index i = 0; i < x_.cols(); ++i)
-    if (contacts_[static_cast<std::size_t>(i)].hit) inv_m_[i] = 0;
-  limit_velocities();
-  inv_m_ = inv_m;
+  // the velocity limit again, each pass followed by the contacts' non-penetration: the body stops the
+  // cloth's motion into it, the limit its stretch along it (a Gauss-Seidel sweep over both constraints)
+  limit_velocities(true);
 }
 
 void Simulator::integrate_positions() {
@@ -375,7 +399,11 @@ void Simulator::merge_seams() {
     grown = true;
   }
   if (grown) group_merged_pairs();
-  // each group moves as one point: the mass-weighted mean position and velocity, or its attached
+  move_merged_as_one(true);
+}
+
+void Simulator::move_merged_as_one(bool positions) {
+  // each group moves as one point: the mass-weighted mean velocity (and position), or its attached
   // members' when it has any
   for (const auto& group : merged_groups_) {
     Vec3 x = Vec3::Zero(), v = Vec3::Zero();
@@ -387,8 +415,11 @@ void Simulator::merge_seams() {
       v += m_[i] * v_.col(i);
       w += m_[i];
     }
-    for (int i : group)
-      if (inv_m_[i] > 0) col(x_, i) = x / w, col(v_, i) = v / w;
+    for (int i : group) {
+      if (inv_m_[i] == 0) continue;
+      col(v_, i) = v / w;
+      if (positions) col(x_, i) = x / w;
+    }
   }
 }
 

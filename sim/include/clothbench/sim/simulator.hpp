@@ -75,11 +75,13 @@ struct SolverParams {
   Real threshold = 0.10f;                ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
   Real stiff_factor = 10.f;              ///< Limit::kStiff multiplies every stiffness by this
   int limit_passes = 1;                  ///< passes of the position/velocity limit over all springs per iteration
-  /// velocity limits run once more after the collision response, vertices in contact kept as the response left
-  /// them (the response would otherwise undo the limit where the body holds the cloth; papers regime)
+  /// velocity limits run once more after the collision response, each pass followed by stopping motion into the
+  /// body of the vertices in contact (the response would otherwise undo the limit where the body holds the cloth;
+  /// papers regime)
   bool limit_after_response = false;
   Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
   bool face_queries = false;             ///< also query quad midpoints (dressing section 6)
+  bool push_out = true;                  ///< vertices found inside the body are moved to its surface (Durupinar Eq. 3)
   bool reaction_force = false;           ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
@@ -198,7 +200,10 @@ class Simulator {
  private:
   void detect();
   ForceModel force_model() const;
-  void limit_velocities();
+  void limit_velocities(bool contacts_stop_inward = false);
+  void stop_inward_contacts();
+  void order_springs_from_held();
+  void move_merged_as_one(bool positions);
   void limit_after_response();
   void limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s);
   Vec3 spring_object_velocity(int a, int b) const;
@@ -215,6 +220,7 @@ class Simulator {
   Material material_;
   SolverParams params_;
   void set_stiffness();
+  void build_adjacency();
 
   Real k_kind_[kSpringKinds] = {};  // stiffness per spring kind [N/m]
   Scalars k_;          // stiffness per spring [N/m] (ns)
@@ -228,6 +234,8 @@ class Simulator {
   std::vector<Contact> contacts_;
   std::vector<std::uint8_t> merged_;  // per seam pair
   std::vector<std::uint8_t> held_;    // per vertex, directional limit: attached, in contact, or following one
+  std::vector<int> adj_start_, adj_;  // vertex -> neighbours over springs and seam pairs (CSR)
+  std::vector<int> spring_order_;     // the velocity limit's sweep: springs nearest held vertices first
   std::vector<int> attach_tri_;       // per attached vertex
   Points3 attach_bary_;               // (3 x na)
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
