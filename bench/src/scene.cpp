@@ -205,6 +205,7 @@ void read_solver(Section s, SolverParams& p) {
   s.number("limit_passes", p.limit_passes, 1, 1000);
   s.flag("limit_after_response", p.limit_after_response);
   s.flag("push_out", p.push_out);
+  s.number("push_speed", p.push_speed, 1e-3, 100);
   s.number("limit_speed", p.limit_speed, 0, 100);
   s.flag("face_queries", p.face_queries);
   s.flag("reaction_force", p.reaction_force);
@@ -376,7 +377,7 @@ std::string solver_config(const SolverParams& p) {
   ConfigWriter w("solver");
   w("dt", double(p.dt))("dt_fraction", double(p.dt_fraction))("allow_unstable_dt", p.allow_unstable_dt);
   w("masses", to_string(p.masses))("limit_after_response", p.limit_after_response);
-  w("push_out", p.push_out);
+  w("push_out", p.push_out)("push_speed", double(p.push_speed));
   w("limit", to_string(p.limit))("threshold", double(p.threshold))("stiff_factor", double(p.stiff_factor));
   w("limit_passes", p.limit_passes)("limit_speed", double(p.limit_speed))("face_queries", p.face_queries);
   w("reaction_force", p.reaction_force)("gravity", p.gravity)("seam_method", to_string(p.seam_method));

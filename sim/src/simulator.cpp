@@ -104,6 +104,7 @@ void validate(const Material& m, const SolverParams& p) {
   require(p.seam_reach > 0, "seam_reach", "> 0 m", p.seam_reach);
   require(p.seam_speed > 0, "seam_speed", "> 0 m/s", p.seam_speed);
   require(p.limit_speed >= 0, "limit_speed", ">= 0 m/s", p.limit_speed);
+  require(p.push_speed > 0, "push_speed", "> 0 m/s", p.push_speed);
   require(p.attraction_speed > 0, "attraction_speed", "> 0 m/s", p.attraction_speed);
   require(p.merge_distance > 0, "merge_distance", "> 0 m", p.merge_distance);
   require(p.max_speed > 0, "max_speed", "> 0 m/s", p.max_speed);
@@ -350,8 +351,10 @@ void Simulator::respond() {
     const Contact& c = contacts_[static_cast<std::size_t>(i)];
     if (!c.hit || inv_m_[i] == 0) continue;
     col(v_, i) = resolve(v_.col(i), c);
-    // Durupinar Eq. 3: a point that has passed beneath the surface is brought back to it along the normal
-    if (params_.push_out && c.depth < 0) col(x_, i) -= c.depth * c.normal;
+    // Durupinar Eq. 3: a point that has passed beneath the surface is brought back to it along the normal, no
+    // faster than push_speed (a body that swallowed the cloth between frames lets it out over a few steps,
+    // not with a jump its springs would turn into a speed)
+    if (params_.push_out && c.depth < 0) col(x_, i) += std::min(-c.depth, params_.push_speed * dt_) * c.normal;
   }
   if (!params_.face_queries) return;
   // face-body: the quad midpoint's response goes to its four vertices, averaged (dressing section 6),

@@ -82,6 +82,7 @@ struct SolverParams {
   Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
   bool face_queries = false;             ///< also query quad midpoints (dressing section 6)
   bool push_out = true;                  ///< vertices found inside the body are moved to its surface (Durupinar Eq. 3)
+  Real push_speed = 2.f;                 ///< push_out moves a vertex no faster than this [m/s]
   bool reaction_force = false;           ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
