@@ -78,29 +78,38 @@ void Simulator::limit_velocities(bool contacts_stop_inward) {
 void Simulator::order_springs_from_held() {
   // a Gauss-Seidel sweep converges in one pass along a chain swept from its support: springs in order of
   // their nearer end's hops from a held vertex (breadth first; springs out of reach of any keep their order last)
-  const std::size_t nv = held_.size();
-  std::vector<int> level(nv, -1), queue;
-  queue.reserve(nv);
+  // the order depends only on which vertices are held: kept while that set stays (the second call of a step,
+  // a cloth resting on the body)
+  if (held_ == order_held_ && spring_order_.size() == static_cast<std::size_t>(mesh_.springs.cols())) return;
+  order_held_ = held_;
+  const std::size_t nv = held_.size(), ns = static_cast<std::size_t>(mesh_.springs.cols());
+  auto& level = order_level_;
+  auto& queue = order_queue_;
+  level.assign(nv, -1);
+  queue.clear();
   for (std::size_t i = 0; i < nv; ++i)
     if (held_[i]) level[i] = 0, queue.push_back(static_cast<int>(i));
   for (std::size_t q = 0; q < queue.size(); ++q) {
-    const int i = queue[q];
-    for (int k = adj_start_[static_cast<std::size_t>(i)]; k < adj_start_[static_cast<std::size_t>(i) + 1]; ++k) {
-      int& l = level[static_cast<std::size_t>(adj_[static_cast<std::size_t>(k)])];
-      if (l < 0) l = level[static_cast<std::size_t>(i)] + 1, queue.push_back(adj_[static_cast<std::size_t>(k)]);
+    const auto i = static_cast<std::size_t>(queue[q]);
+    for (int k = adj_start_[i]; k < adj_start_[i + 1]; ++k) {
+      const int j = adj_[static_cast<std::size_t>(k)];
+      if (level[static_cast<std::size_t>(j)] < 0) level[static_cast<std::size_t>(j)] = level[i] + 1, queue.push_back(j);
     }
   }
+  // a spring's level: its nearer end's (a spring out of reach of every held vertex goes last)
   const int unreached = queue.empty() ? 0 : level[static_cast<std::size_t>(queue.back())] + 1;
-  const auto spring_level = [&](Eigen::Index s) {
-    const int a = level[static_cast<std::size_t>(mesh_.springs(0, s))], b = level[static_cast<std::size_t>(mesh_.springs(1, s))];
-    return a < 0 || b < 0 ? std::max({a, b, unreached}) : std::min(a, b);
-  };
+  auto& spring_level = order_spring_level_;
+  spring_level.resize(ns);
   std::vector<int> count(static_cast<std::size_t>(unreached) + 2, 0);
-  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) ++count[static_cast<std::size_t>(spring_level(s)) + 1];
+  for (std::size_t s = 0; s < ns; ++s) {
+    const int a = level[static_cast<std::size_t>(mesh_.springs(0, s))], b = level[static_cast<std::size_t>(mesh_.springs(1, s))];
+    spring_level[s] = a < 0 || b < 0 ? unreached : std::min(a, b);
+    ++count[static_cast<std::size_t>(spring_level[s]) + 1];
+  }
   for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
-  spring_order_.resize(static_cast<std::size_t>(mesh_.springs.cols()));
-  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s)
-    spring_order_[static_cast<std::size_t>(count[static_cast<std::size_t>(spring_level(s))]++)] = static_cast<int>(s);
+  spring_order_.resize(ns);
+  for (std::size_t s = 0; s < ns; ++s)
+    spring_order_[static_cast<std::size_t>(count[static_cast<std::size_t>(spring_level[s])]++)] = static_cast<int>(s);
 }
 
 void Simulator::stop_inward_contacts() {

@@ -237,6 +237,8 @@ class Simulator {
   std::vector<std::uint8_t> held_;    // per vertex, directional limit: attached, in contact, or following one
   std::vector<int> adj_start_, adj_;  // vertex -> neighbours over springs and seam pairs (CSR)
   std::vector<int> spring_order_;     // the velocity limit's sweep: springs nearest held vertices first
+  std::vector<std::uint8_t> order_held_;  // the held vertices spring_order_ was computed for
+  std::vector<int> order_level_, order_queue_, order_spring_level_;  // its work space (hops from held vertices)
   std::vector<int> attach_tri_;       // per attached vertex
   Points3 attach_bary_;               // (3 x na)
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
