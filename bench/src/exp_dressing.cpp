@@ -68,6 +68,18 @@ const RunResult& t1_run(ExperimentContext& ctx, const T1Garment& g, const std::s
   return ctx.run(g.scene, collider, with_quick(ctx, sets));
 }
 
+// what names a run in a regime other than the stable one: SEP + regime (rows, pictures), empty for stable
+std::string regime_suffix(const std::string& regime, const std::string& sep) {
+  return regime == "stable" ? "" : sep + regime;
+}
+
+// the is-cpu run's picture, named and labelled by garment and regime
+std::string regime_picture(ExperimentContext& ctx, const RunResult& r, const std::string& table,
+                           const std::string& product, const std::string& regime) {
+  return picture(ctx, r, table + "-" + product + regime_suffix(regime, "-"),
+                 product + (regime == "stable" ? "" : " (" + regime + ")"));
+}
+
 // "N at dt ms": an iteration count with the step it was taken at
 std::string iterations_cell(const RunResult& r) {
   return std::to_string(r.iterations()) + " at " + num(1e3 * r.dt_s, 3) + " ms";
@@ -92,11 +104,8 @@ void dressing_t1(ExperimentContext& ctx) {
              num(r.ms_per_iteration(), 3), num(r.cdr_ms_per_iteration(), 3), p.method, std::to_string(p.iterations),
              num(p.total_s, 1), num(p.ms_per_iteration, 1), num(r.ms_per_iteration() / p.ms_per_iteration, 3),
              accuracy_cells(r), r.converged ? "yes" : "no"});
-      const std::string suffix = regime == "stable" ? "" : "/" + regime;
-      ctx.add_row(result_row(r, std::string("dressing-t1/") + g.product + "/" + c + suffix));
-      if (c == "is-cpu")
-        pictures.push_back(picture(ctx, r, std::string("dressing-t1-") + g.product + (suffix.empty() ? "" : "-" + regime),
-                                   g.product + (suffix.empty() ? "" : " (" + regime + ")")));
+      ctx.add_row(result_row(r, std::string("dressing-t1/") + g.product + "/" + c + regime_suffix(regime, "/")));
+      if (c == "is-cpu") pictures.push_back(regime_picture(ctx, r, "dressing-t1", g.product, regime));
       if (c == "is-cpu" && regime == "stable" && g.product == std::string("dress")) {
         export_dressed(ctx.path("pictures/dressing-t1-dress.glb"), r.final_body, r.mesh);
         gltf = "; the dress as binary glTF: [dressing-t1-dress.glb](pictures/dressing-t1-dress.glb)";
@@ -173,11 +182,8 @@ void dressing_t2(ExperimentContext& ctx) {
              num(r.total_s(), 2), num(r.ms_per_iteration(), 3), std::to_string(p.vertices),
              std::to_string(p.iterations), num(p.total_s, 3), num(p.ms_per_iteration, 1), accuracy_cells(r),
              r.converged ? "yes" : "no"});
-      const std::string suffix = regime == "stable" ? "" : "/" + regime;
-      ctx.add_row(result_row(r, std::string("dressing-t2/") + g.product + "/" + c + suffix));
-      if (c == "is-cpu")
-        pictures.push_back(picture(ctx, r, std::string("dressing-t2-") + g.product + (suffix.empty() ? "" : "-" + regime),
-                                   g.product + (suffix.empty() ? "" : " (" + regime + ")")));
+      ctx.add_row(result_row(r, std::string("dressing-t2/") + g.product + "/" + c + regime_suffix(regime, "/")));
+      if (c == "is-cpu") pictures.push_back(regime_picture(ctx, r, "dressing-t2", g.product, regime));
     }
   }
   ctx.write("dressing-t2", "Dressing paper Table 2: minimum vertices with face-body collisions",

@@ -267,7 +267,9 @@ bool Simulator::step() {
   respond();
   cdr_ms += cdr.ms();
   cs.restart();
-  if (params_.limit_after_response && collider_) limit_after_response();
+  // the limit again, each pass followed by the contacts' non-penetration: the body stops the cloth's motion
+  // into it, the limit its stretch along it (a Gauss-Seidel sweep over both constraints)
+  if (params_.limit_after_response && collider_) limit_velocities(true);
   integrate_positions();
   if (drifts) v_ -= drift_ / dt_;  // back to the end-of-step velocity, with what limits and response changed
   limit_positions();
@@ -377,12 +379,6 @@ void Simulator::respond() {
     const auto n = face_count[static_cast<std::size_t>(i)];
     if (n && inv_m_[i] > 0) col(v_, i) += face_sum[static_cast<std::size_t>(i)] / Real(n);
   }
-}
-
-void Simulator::limit_after_response() {
-  // the velocity limit again, each pass followed by the contacts' non-penetration: the body stops the
-  // cloth's motion into it, the limit its stretch along it (a Gauss-Seidel sweep over both constraints)
-  limit_velocities(true);
 }
 
 void Simulator::integrate_positions() {

@@ -205,7 +205,6 @@ class Simulator {
   void stop_inward_contacts();
   void order_springs_from_held();
   void move_merged_as_one(bool positions);
-  void limit_after_response();
   void limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s);
   Vec3 spring_object_velocity(int a, int b) const;
   void cap_seam_speeds();
