@@ -80,6 +80,7 @@ void print_summary(const RunArgs& a, const RunResult& r) {
       "seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
       r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.accuracy.crossings,
       r.accuracy.crossings_pct, r.seam_gap_max_mm, 100 * r.strain_max, 100 * r.strain_p99);
+  if (!r.strain_max_where.empty()) std::printf("  strain max at %s\n", r.strain_max_where.c_str());
   print_verdict(r);
 }
 

@@ -336,6 +336,23 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   clock.finish(r.animate);
 }
 
+// "spring 40 (vertices 12-13) at height 1.32 m, 1 of 2 ends in contact, 0 of 2 on a seam": where a spring is
+std::string describe_spring(const Simulator& sim, int s) {
+  if (s < 0) return "";
+  const ClothMesh& mesh = sim.mesh();
+  const int ends[2] = {mesh.springs(0, s), mesh.springs(1, s)};
+  int in_contact = 0, on_seam = 0;
+  for (int v : ends) {
+    in_contact += sim.contacts().size() > static_cast<std::size_t>(v) && sim.contacts()[static_cast<std::size_t>(v)].hit;
+    on_seam += (mesh.seam_pairs.array() == v).any();
+  }
+  const double y = 0.5 * double(sim.positions()(1, ends[0]) + sim.positions()(1, ends[1]));
+  char text[160];
+  std::snprintf(text, sizeof text, "spring %d (vertices %d-%d) at height %.2f m, %d of 2 ends in contact, %d of 2 on a seam", s,
+                ends[0], ends[1], y, in_contact, on_seam);
+  return text;
+}
+
 // accuracy of the end state against the exact body (vertices, and quad midpoints with face queries;
 // crossings of the structural springs; penetrating faces)
 void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
@@ -353,6 +370,7 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   const StrainStats strain = sim.strain();
   r.strain_max = strain.max;
   r.strain_p99 = strain.p99;
+  r.strain_max_where = describe_spring(sim, strain.max_spring);
   r.kinetic_energy = sim.kinetic_energy();
 }
 

@@ -49,6 +49,7 @@ struct RunResult {
   Accuracy accuracy;            ///< vertices and (with face queries) quad midpoints, end state
   double seam_gap_max_mm = 0;
   double strain_max = 0, strain_p99 = 0;
+  std::string strain_max_where; ///< the most strained structural spring: its ends, height, contacts, seams
   double kinetic_energy = 0;
   double animate_strain_max = 0;///< largest structural strain seen at any animation frame
   double animate_inside_max_pct = 0;  ///< RunOptions::measure_frames: most cloth inside the body at any frame [%]

@@ -441,12 +441,14 @@ void Simulator::group_merged_pairs() {
   }
   std::sort(members.begin(), members.end());
   members.erase(std::unique(members.begin(), members.end()), members.end());
-  std::vector<int> group_of(root.size(), -1);
+  std::vector<int> group_of_root(root.size(), -1);
   merged_groups_.clear();
+  group_of_.assign(root.size(), -1);
   for (int i : members) {  // in vertex order, so the result is deterministic
-    auto& g = group_of[static_cast<std::size_t>(find(i))];
+    auto& g = group_of_root[static_cast<std::size_t>(find(i))];
     if (g < 0) g = static_cast<int>(merged_groups_.size()), merged_groups_.emplace_back();
     merged_groups_[static_cast<std::size_t>(g)].push_back(i);
+    group_of_[static_cast<std::size_t>(i)] = g;
   }
 }
 
@@ -515,17 +517,17 @@ Real Simulator::sewn_fraction() const {
 
 StrainStats Simulator::strain() const {
   std::vector<Real> e;
+  StrainStats st;
   for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) {
     if (mesh_.kind[s] != SpringKind::kStructural) continue;
     const Real len = (x_.col(mesh_.springs(0, s)) - x_.col(mesh_.springs(1, s))).norm();
     e.push_back((len - mesh_.rest_length[s]) / mesh_.rest_length[s]);
+    if (st.max_spring < 0 || e.back() > st.max) st.max = e.back(), st.max_spring = static_cast<int>(s);
   }
   if (e.empty()) return {};
   const std::size_t k = std::min(e.size() - 1, static_cast<std::size_t>(0.99 * double(e.size())));
   std::nth_element(e.begin(), e.begin() + static_cast<long>(k), e.end());
-  StrainStats st;
   st.p99 = e[k];
-  st.max = *std::max_element(e.begin(), e.end());
   return st;
 }
 

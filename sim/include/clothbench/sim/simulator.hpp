@@ -107,6 +107,7 @@ struct Divergence {
 struct StrainStats {
   Real max = 0;
   Real p99 = 0;
+  int max_spring = -1;  ///< the spring with the largest strain (-1 when there is none)
 };
 
 /// Cumulative per-phase timings [ms] and counts; CD&R and CS as in walking Table 1.
@@ -205,6 +206,9 @@ class Simulator {
   void stop_inward_contacts();
   void order_springs_from_held();
   void move_merged_as_one(bool positions);
+  void set_point_masses();
+  void add_point_velocity(int i, const Vec3& dv);
+  void hold_point(int i);
   void limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s);
   Vec3 spring_object_velocity(int a, int b) const;
   void cap_seam_speeds();
@@ -242,6 +246,8 @@ class Simulator {
   Points3 attach_bary_;               // (3 x na)
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
+  std::vector<int> group_of_;         // per vertex: its merged group, or -1 (nv)
+  Scalars point_m_, point_inv_m_;     // the velocity limit's masses: a merged group's (0 inverse when attached) (nv)
   Box3 start_box_;
   Collider* collider_ = nullptr;
   Phase phase_ = Phase::kDrape;
