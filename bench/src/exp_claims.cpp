@@ -47,8 +47,14 @@ Claim iterations_claim(ExperimentContext& ctx) {
   // per garment: the fewest sewing iterations of a run that sewed, image space against object space
   std::map<std::string, std::pair<long, long>> best;  // garment -> (IS, OS)
   for (const auto& [name, r] : rows) {
-    const auto slash = name.find('/'), last = name.rfind('/');
-    const std::string garment = name.substr(slash + 1, last - slash - 1), collider = name.substr(last + 1);
+    // dressing-t1/GARMENT/COLLIDER[/REGIME]: image space against object space within one regime
+    std::vector<std::string> part;
+    for (std::size_t at = 0, next; at <= name.size(); at = next + 1) {
+      next = std::min(name.find('/', at), name.size());
+      part.push_back(name.substr(at, next - at));
+    }
+    if (part.size() < 3) continue;
+    const std::string garment = part[1] + (part.size() > 3 ? " (" + part[3] + ")" : ""), collider = part[2];
     const bool sewn = r.value("sewn", 0) == 1;
     c.numbers +=
         garment + "/" + collider + " " + (sewn ? std::to_string(r["sew_iterations"].get<long>()) : "not sewn") + "; ";
