@@ -336,7 +336,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   clock.finish(r.animate);
 }
 
-// "spring 40 (vertices 12-13) at height 1.32 m, 1 of 2 ends in contact, 0 of 2 on a seam": where a spring is
+// "spring 40 (vertices 12-13), 1.32 m high, ends in contact 1/2, on a seam 0/2": where a spring is
 std::string describe_spring(const Simulator& sim, int s) {
   if (s < 0) return "";
   const ClothMesh& mesh = sim.mesh();
@@ -348,7 +348,7 @@ std::string describe_spring(const Simulator& sim, int s) {
   }
   const double y = 0.5 * double(sim.positions()(1, ends[0]) + sim.positions()(1, ends[1]));
   char text[160];
-  std::snprintf(text, sizeof text, "spring %d (vertices %d-%d) at height %.2f m, %d of 2 ends in contact, %d of 2 on a seam", s,
+  std::snprintf(text, sizeof text, "spring %d (vertices %d-%d), %.2f m high, ends in contact %d/2, on a seam %d/2", s,
                 ends[0], ends[1], y, in_contact, on_seam);
   return text;
 }
