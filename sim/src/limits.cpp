@@ -67,48 +67,27 @@ void Simulator::limit_velocities(bool contacts_stop_inward) {
   held_.assign(static_cast<std::size_t>(x_.cols()), 0);
   for (Eigen::Index i = 0; i < x_.cols(); ++i)
     held_[i] = inv_m_[i] == 0 || (!contacts_.empty() && contacts_[static_cast<std::size_t>(i)].hit);
-  for (const auto& group : merged_groups_)  // a sewn point is held when any of its vertices is
-    if (std::any_of(group.begin(), group.end(), [&](int i) { return held_[static_cast<std::size_t>(i)]; }))
-      for (int i : group) held_[static_cast<std::size_t>(i)] = 1;
   order_springs_from_held();
-  set_point_masses();
-  move_merged_as_one(false);
-  for (int pass = 0; pass < params_.limit_passes; ++pass) {
-    for (int s : spring_order_) limit_spring(l, max_len_factor, v_grav, s);
-    if (!contacts_stop_inward) continue;
-    stop_inward_contacts();
-    move_merged_as_one(false);
+  // a pass visits only the springs with an end whose velocity changed in the last pass or in this one (the
+  // others would find what they found before), and the passes stop once one changes nothing
+  changed_in_pass_.assign(static_cast<std::size_t>(x_.cols()), 0);
+  for (pass_ = 1; pass_ <= params_.limit_passes; ++pass_) {
+    const auto was_changed = [&](int v) { return changed_in_pass_[static_cast<std::size_t>(v)] >= pass_ - 1; };
+    changes_ = 0;
+    for (int s : spring_order_)
+      if (pass_ == 1 || was_changed(mesh_.springs(0, s)) || was_changed(mesh_.springs(1, s)))
+        limit_spring(l, max_len_factor, v_grav, s);
+    move_merged_as_one(false);  // a sewn point is one point to the limit too
+    if (contacts_stop_inward) stop_inward_contacts();
+    if (changes_ == 0) break;
   }
+  pass_ = 0;
 }
 
-void Simulator::set_point_masses() {
-  // a sewn (merged) group is one point to the limit: its mass is the group's, and a group with an attached
-  // member is attached
-  point_m_ = m_;
-  point_inv_m_ = inv_m_;
-  for (const auto& group : merged_groups_) {
-    Real m = 0, inv = 1;
-    for (int i : group) m += m_[i], inv = inv_m_[i] == 0 ? Real(0) : inv;
-    for (int i : group) point_m_[i] = m, point_inv_m_[i] = inv == 0 ? Real(0) : 1 / m;
-  }
-}
-
-void Simulator::hold_point(int i) {
-  const int g = group_of_.empty() ? -1 : group_of_[static_cast<std::size_t>(i)];
-  if (g < 0) held_[static_cast<std::size_t>(i)] = 1;
-  else
-    for (int j : merged_groups_[static_cast<std::size_t>(g)]) held_[static_cast<std::size_t>(j)] = 1;
-}
-
-void Simulator::add_point_velocity(int i, const Vec3& dv) {
-  // a change of a merged point's velocity moves all of its group (the limit keeps sewn points one point)
-  const int g = group_of_.empty() ? -1 : group_of_[static_cast<std::size_t>(i)];
-  if (g < 0) {
-    v_.col(i) += dv;
-    return;
-  }
-  for (int j : merged_groups_[static_cast<std::size_t>(g)])
-    if (inv_m_[j] > 0) v_.col(j) += dv;
+void Simulator::mark_changed(int i) {
+  if (pass_ == 0) return;
+  changed_in_pass_[static_cast<std::size_t>(i)] = pass_;
+  ++changes_;
 }
 
 void Simulator::order_springs_from_held() {
@@ -154,7 +133,7 @@ void Simulator::stop_inward_contacts() {
     const Contact& c = contacts_[static_cast<std::size_t>(i)];
     if (!c.hit || inv_m_[i] == 0) continue;
     const Real vn = (v_.col(i) - c.body_velocity).dot(c.normal);
-    if (vn < 0) v_.col(i) -= vn * c.normal;
+    if (vn < 0) v_.col(i) -= vn * c.normal, mark_changed(static_cast<int>(i));
   }
 }
 
@@ -168,8 +147,10 @@ void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, E
   // keeping the relative velocity along it that ends the step at the allowed length is then the nearest
   // allowed motion, however fast the spring turns, so passes over all springs converge
   const Vec3 d_end = d + dt_ * dv;
-  const Real len_end = d_end.norm(), len = d.norm();
-  if (!(len_end > max_len) || !(len > 0)) return;
+  const Real len_end2 = d_end.squaredNorm();
+  if (!(len_end2 > max_len * max_len)) return;  // most springs: no square root
+  const Real len_end = std::sqrt(len_end2), len = d.norm();
+  if (!(len > 0)) return;
   const Vec3 u = d_end / len_end;
   const Real va = v_.col(a).dot(u), vb = v_.col(b).dot(u);
   // a spring already past max_len (pinched between two moving body parts, dragged by the response,
@@ -178,10 +159,7 @@ void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, E
   const Real allowed = std::max(max_len, len) - std::max(std::min(len - max_len, params_.limit_speed * dt_), Real(0));
   const Real target = l == Limit::kVelocityZero ? Real(0) : (allowed - d.dot(u)) / dt_;
   if (vb - va <= target) return;  // only further elongation is forbidden: a spring may shorten
-  if (point_inv_m_[a] == 0 && point_inv_m_[b] == 0) return;
-  if (!group_of_.empty() && group_of_[static_cast<std::size_t>(a)] >= 0 &&
-      group_of_[static_cast<std::size_t>(a)] == group_of_[static_cast<std::size_t>(b)])
-    return;  // both ends are one sewn point
+  if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
   Real na = va, nb = vb;
   if (l == Limit::kDirectional) {
     // walking Eq. 6: v_dir = v_grav + v_object; the rules after it pick averaging or the rear point
@@ -192,18 +170,19 @@ void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, E
       // a held rear point cannot catch up: the front follows it and is held in turn (our reading)
       na = rear == a ? va : vb - target;
       nb = na + target;
-      hold_point(rear == a ? b : a);
+      const int front = rear == a ? b : a;
+      if (!held_[static_cast<std::size_t>(front)]) held_[static_cast<std::size_t>(front)] = 1, mark_changed(front);
     } else {
-      std::tie(na, nb) = limit_stretch_velocity(l, va, vb, cos_a, point_m_[a], point_m_[b], target);
+      std::tie(na, nb) = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b], target);
     }
   } else {
-    std::tie(na, nb) = limit_stretch_velocity(l, va, vb, 0, point_m_[a], point_m_[b], target);
+    std::tie(na, nb) = limit_stretch_velocity(l, va, vb, 0, m_[a], m_[b], target);
   }
   // an attached end keeps its velocity and the free end follows it
-  if (point_inv_m_[a] == 0) na = va, nb = va + target;
-  if (point_inv_m_[b] == 0) nb = vb, na = vb - target;
-  add_point_velocity(a, (na - va) * u);
-  add_point_velocity(b, (nb - vb) * u);
+  if (inv_m_[a] == 0) na = va, nb = va + target;
+  if (inv_m_[b] == 0) nb = vb, na = vb - target;
+  if (na != va) v_.col(a) += (na - va) * u, mark_changed(a);
+  if (nb != vb) v_.col(b) += (nb - vb) * u, mark_changed(b);
 }
 
 Vec3 Simulator::spring_object_velocity(int a, int b) const {

@@ -416,6 +416,7 @@ void Simulator::move_merged_as_one(bool positions) {
     }
     for (int i : group) {
       if (inv_m_[i] == 0) continue;
+      if ((v_.col(i) - v / w).squaredNorm() > Real(1e-12)) mark_changed(i);  // changed by more than 1 um/s
       col(v_, i) = v / w;
       if (positions) col(x_, i) = x / w;
     }
@@ -441,14 +442,12 @@ void Simulator::group_merged_pairs() {
   }
   std::sort(members.begin(), members.end());
   members.erase(std::unique(members.begin(), members.end()), members.end());
-  std::vector<int> group_of_root(root.size(), -1);
+  std::vector<int> group_of(root.size(), -1);
   merged_groups_.clear();
-  group_of_.assign(root.size(), -1);
   for (int i : members) {  // in vertex order, so the result is deterministic
-    auto& g = group_of_root[static_cast<std::size_t>(find(i))];
+    auto& g = group_of[static_cast<std::size_t>(find(i))];
     if (g < 0) g = static_cast<int>(merged_groups_.size()), merged_groups_.emplace_back();
     merged_groups_[static_cast<std::size_t>(g)].push_back(i);
-    group_of_[static_cast<std::size_t>(i)] = g;
   }
 }
 

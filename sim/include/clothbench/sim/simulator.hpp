@@ -206,9 +206,7 @@ class Simulator {
   void stop_inward_contacts();
   void order_springs_from_held();
   void move_merged_as_one(bool positions);
-  void set_point_masses();
-  void add_point_velocity(int i, const Vec3& dv);
-  void hold_point(int i);
+  void mark_changed(int i);
   void limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s);
   Vec3 spring_object_velocity(int a, int b) const;
   void cap_seam_speeds();
@@ -246,8 +244,9 @@ class Simulator {
   Points3 attach_bary_;               // (3 x na)
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
-  std::vector<int> group_of_;         // per vertex: its merged group, or -1 (nv)
-  Scalars point_m_, point_inv_m_;     // the velocity limit's masses: a merged group's (0 inverse when attached) (nv)
+  std::vector<int> changed_in_pass_;  // per vertex: the last limit pass (1-based) that changed its velocity
+  int pass_ = 0;                      // the limit pass under way (0: none)
+  long changes_ = 0;                  // velocity changes in that pass
   Box3 start_box_;
   Collider* collider_ = nullptr;
   Phase phase_ = Phase::kDrape;
