@@ -33,15 +33,6 @@ std::vector<std::string> overrides(const ExperimentContext& ctx, const Garment& 
   return sets;
 }
 
-std::string misses_cell(const RunResult& r) {
-  const std::vector<std::string> misses = limit_misses(r);
-  if (misses.empty()) return "yes";
-  std::string cell = "no:";
-  for (const std::string& m : misses) cell += " " + m + ";";
-  cell.pop_back();
-  return cell;
-}
-
 void integrators(ExperimentContext& ctx) {
   const Garment garments[] = {{"shirt", "dressing/shirt.toml", 1800, paper::kDressingT1[0].iterations},
                               {"dress", "dressing/dress.toml", 3840, paper::kDressingT1[2].iterations},
@@ -78,7 +69,7 @@ void integrators(ExperimentContext& ctx) {
                    num(r.cs_ms_per_iteration(), 3) + ")",
                num(r.accuracy.inside_pct, 2), num(r.accuracy.depth_max_mm, 1), num(r.accuracy.crossings_pct, 2),
                num(r.seam_gap_max_mm, 1), num(100 * r.strain_max, 1) + " / " + num(100 * r.strain_p99, 1),
-               r.strain_max_where, misses_cell(r)});
+               r.strain_max_where, limits_cell(r)});
         x.push_back(wall_s);
         y.push_back(100 * r.strain_p99);
       }

@@ -75,13 +75,13 @@ void walking_t2(ExperimentContext& ctx) {
                         {"dress with sleeves", "walking/dress_sleeves.toml", 2300}};
   MarkdownTable t({"garment", "regime", "collider", "vertices", "frames", "steps/frame at dt", "s/frame", "frames/s",
                    "skinning ms/frame", "maps or refit ms/frame", "cloth ms/frame (CD&R + CS)", "paper s/frame",
-                   "paper frames/s", "inside [%] end", "strain max [%] (animation)"});
+                   "paper frames/s", "inside [%] end", "strain max [%] (animation)", "meets the limits (end)"});
   std::string media;  // where the pictures and videos went
   std::vector<std::string> sets_quick;
   if (ctx.quick()) sets_quick = {"body.start_s=0.1", "body.end_s=0.2", "stop.max_iterations=60"};
   for (std::size_t i = 0; i < 2; ++i) {
     const auto& g = garments[i];
-    for (const std::string regime : {"stable", "papers"})
+    for (const std::string regime : kRegimes)
     for (const auto& c : ctx.colliders({"is-gl", "is-cpu", "fcl", "embree"})) {
       std::vector<std::string> sets = sets_quick;
       sets.push_back("garment.vertices=" + std::to_string(g.vertices));
@@ -107,9 +107,10 @@ void walking_t2(ExperimentContext& ctx) {
              num(r.steps_per_frame, 0) + " at " + num(1e3 * r.dt_s, 3) + " ms",
              num(s_per_frame, 4), num(1 / s_per_frame, 2), num(r.skinning_ms / frames, 2),
              num(r.collider_update_ms / frames, 2), num(cloth_ms, 2), num(p.s_per_frame, 3), num(p.fps, 1),
-             r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2), num(100 * r.animate_strain_max, 1)});
+             r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2), num(100 * r.animate_strain_max, 1),
+             limits_cell(r)});
       ctx.add_row(result_row(r, std::string("walking-t2/") + (i ? "dress_sleeves" : "skirt") + "/" + c +
-                                    (regime == "stable" ? "" : "/" + regime)));
+                                    regime_suffix(regime, "/")));
       if (pictures) {
         write_sequence(sequence, r, ctx.path(stem + "/" + stem.substr(9)));
         const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"),

@@ -86,6 +86,15 @@ std::vector<std::string> limit_misses(const RunResult& r, bool with_strain) {
   return misses;
 }
 
+std::string limits_cell(const RunResult& r, bool with_strain) {
+  const std::vector<std::string> misses = limit_misses(r, with_strain);
+  if (misses.empty()) return "yes";
+  std::string cell = "no:";
+  for (const std::string& m : misses) cell += " " + m + ";";
+  cell.pop_back();
+  return cell;
+}
+
 std::string limits_text(const RunResult& r, bool with_strain) {
   std::string text;
   for (const LimitCheck& c : limit_checks(r, with_strain))

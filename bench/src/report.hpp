@@ -34,6 +34,8 @@ inline constexpr AccuracyLimits kAccuracyLimits{};
 std::vector<std::string> limit_misses(const RunResult& r, bool with_strain = true);
 /// The limits that apply to the run, e.g. "inside <= 0.5 %, depth <= 5 mm, ...".
 std::string limits_text(const RunResult& r, bool with_strain = true);
+/// A table cell: "yes" when the run meets the limits, else "no: " and what it misses.
+std::string limits_cell(const RunResult& r, bool with_strain = true);
 
 /// One benchmarks[] row named `name`: iterations, real_time = ms per iteration, and the counters
 /// of DESIGN.md. Fields that do not apply (accuracy of a diverged run, fps of a static body) are
