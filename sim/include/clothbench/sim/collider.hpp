@@ -71,7 +71,8 @@ class Collider {
   Collider& operator=(const Collider&) = delete;
   virtual ~Collider() = default;
 
-  /// Registry name: "is-gl", "is-cpu", "fcl", "embree", "brute", "sphere".
+  /// Registry name: "is-gl", "is-cpu", "fcl", "embree", "brute"; "sphere" (the analytic collider of the
+  /// sphere scenes, made by the runner, not the registry).
   virtual std::string_view name() const = 0;
   /// Set-up for a body: maps rendered or BVH built. Throws std::runtime_error /
   /// std::invalid_argument with a clear message on bad input.
