@@ -29,7 +29,8 @@ struct AccuracyLimits {
 inline constexpr AccuracyLimits kAccuracyLimits{};
 
 /// What a run misses of kAccuracyLimits, e.g. "inside 6.1 % > 0.5 %"; {"diverged"} for a diverged
-/// run; empty when it meets them. Strain counts when `with_strain` and the run had a limit
+/// run; empty when it meets them. An animated run counts its worst measured frame too (inside, depth and
+/// crossings under RunOptions::measure_frames, strain at every frame). Strain counts when `with_strain` and the run had a limit
 /// (RunResult::strain_threshold > 0).
 std::vector<std::string> limit_misses(const RunResult& r, bool with_strain = true);
 /// The limits that apply to the run, e.g. "inside <= 0.5 %, depth <= 5 mm, ...".
