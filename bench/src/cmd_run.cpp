@@ -1,4 +1,5 @@
 // clothbench run SCENE [--collider NAME] [--set key=value]... [--json FILE] [--png FILE] [--strict] [--estimate]
+//                 [--every-frame]
 #include <cstdio>
 #include <iostream>
 
@@ -15,7 +16,7 @@ namespace {
 struct RunArgs {
   std::string scene, collider, json, png, gltf;
   std::vector<std::string> sets;
-  bool quiet = false, strict = false, estimate = false;
+  bool quiet = false, strict = false, estimate = false, every_frame = false;
 };
 
 // the scene as run: its file, the --set overrides and the hash of the effective configuration
@@ -80,6 +81,13 @@ void print_summary(const RunArgs& a, const RunResult& r) {
       "seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
       r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.accuracy.crossings,
       r.accuracy.crossings_pct, r.seam_gap_max_mm, 100 * r.strain_max, 100 * r.strain_p99);
+  if (r.frames > 0 && a.every_frame)
+    std::printf("  worst frame: %.2f %% inside, depth max %.2f mm, crossings %.2f %%; strain max %.1f %%\n",
+                r.animate_inside_max_pct, r.animate_depth_max_mm, r.animate_crossings_max_pct,
+                100 * r.animate_strain_max);
+  else if (r.frames > 0)
+    std::printf("  worst frame: strain max %.1f %% (--every-frame measures inside, depth and crossings too)\n",
+                100 * r.animate_strain_max);
   if (!r.strain_max_where.empty()) std::printf("  strain max at %s\n", r.strain_max_where.c_str());
   print_verdict(r);
 }
@@ -90,6 +98,7 @@ int run(const RunArgs& a) {
   RunOptions options;
   options.progress = !a.quiet;
   options.estimate_only = a.estimate;
+  options.measure_frames = a.every_frame;
   const RunResult r = run_scene(scene, options);
   if (a.estimate) return 0;
   print_summary(a, r);
@@ -124,6 +133,8 @@ void add_run_command(CLI::App& app, Action& action) {
   cmd->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   cmd->add_flag("--strict", args->strict, "exit 4 when the run misses the accuracy limits");
   cmd->add_flag("--estimate", args->estimate, "print how long the run may take and stop (nothing simulated)");
+  cmd->add_flag("--every-frame", args->every_frame,
+                "moving bodies: measure accuracy at every animation frame; the verdict counts the worst");
   cmd->callback([&action, args] { action = [args] { return run(*args); }; });
 }
 

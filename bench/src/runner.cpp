@@ -14,6 +14,7 @@
 #include "clothbench/sim/timer.hpp"
 #include "pattern_file.hpp"
 #include "registry.hpp"
+#include "body_between_frames.hpp"
 
 namespace clothbench {
 
@@ -282,17 +283,24 @@ double estimate_seconds(const Simulator& sim, Collider& dresser, Collider& colli
          1e3;
 }
 
-// one body frame: evaluate (timed), update the collider, move attachments, then `steps` cloth steps
-bool advance_frame(const BodySource& source, double t, long steps, Simulator& sim, Collider& collider,
-                   BodyFrame& frame, double& skinning_ms) {
+// one body frame: evaluate (timed), update the collider, move attachments, then `steps` cloth steps spread over
+// the frame; with body.move_between_frames each step sees the body where it was at the step's time
+// (BodyBetweenFrames), else the frame's end pose throughout
+bool advance_frame(const BodySource& source, double t, double frame_dt, long steps, Simulator& sim,
+                   BodyBetweenFrames& collider, Collider& inner, bool between, BodyFrame& frame, double& skinning_ms) {
   Stopwatch skin;
   source.frame_into(frame, t);
   skinning_ms += skin.ms();
-  if (auto* sphere = dynamic_cast<SphereCollider*>(&collider)) sphere->set_sphere(source.sphere_center(t), frame.velocities.col(0));
+  if (auto* sphere = dynamic_cast<SphereCollider*>(&inner)) sphere->set_sphere(source.sphere_center(t), frame.velocities.col(0));
   collider.update_body(frame);
   if (!sim.mesh().attached.empty()) sim.follow_attachments(frame);
   bool alive = true;
-  for (long s = 0; s < steps && alive; ++s) alive = sim.step();
+  sim.set_collider(&collider);
+  for (long s = 0; s < steps && alive; ++s) {
+    collider.set_time_before_pose(between ? Real(frame_dt * double(steps - 1 - s) / double(steps)) : Real(0));
+    alive = sim.step();
+  }
+  collider.set_time_before_pose(0);
   return alive;
 }
 
@@ -306,9 +314,12 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   r.steps_per_frame = double(steps);
   double unmeasured_ms = 0;
   bool alive = true;
-  sim.set_collider(&dresser);
+  const Real tol = scene.collider_options.tol;
+  const bool between = scene.body.move_between_frames;
+  BodyBetweenFrames dresser_between(dresser, tol), collider_between(collider, tol);
   for (long f = 1; f <= lead_in && alive; ++f) {
-    alive = advance_frame(source, source.dress_time() + double(f) * frame_dt, steps, sim, dresser, frame, unmeasured_ms);
+    alive = advance_frame(source, source.dress_time() + double(f) * frame_dt, frame_dt, steps, sim, dresser_between,
+                          dresser, between, frame, unmeasured_ms);
     progress.report("animate (lead-in): frame %ld of %ld", f, lead_in);
   }
   sim.set_collider(&collider);
@@ -318,7 +329,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   double not_animation_ms = 0;
   for (long f = 1; f <= frames && alive; ++f) {
     const double t = source.start() + double(f) * frame_dt;
-    alive = advance_frame(source, t, steps, sim, collider, frame, r.skinning_ms);
+    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, collider, between, frame, r.skinning_ms);
     ++r.frames;
     r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
     Stopwatch outside;  // the oracle and the caller's callback are not the animation's time
@@ -334,6 +345,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     not_animation_ms += outside.ms();
     progress.report("animate: frame %ld of %ld (t = %.2f s)", f, frames, t);
   }
+  sim.set_collider(&collider);  // the wrappers end here
   r.animate.reached = alive && r.frames == frames;
   r.collider_update_ms = collider.stats().update_ms - update_before;
   clock.finish(r.animate);

@@ -150,6 +150,7 @@ void read_body(Section s, BodySpec& b) {
   s.number("end_s", b.end_s, -1, 1e4);
   s.flag("walk_in_place", b.walk_in_place);
   s.number("fps", b.fps, 1, 1000);
+  s.flag("move_between_frames", b.move_between_frames);
   s.choice("shape", [&](const std::string& v) {
     if (v != "mesh" && v != "sphere") throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + v + "\"");
     b.shape = v;
@@ -354,7 +355,8 @@ class ConfigWriter {
 std::string body_config(const BodySpec& b) {
   ConfigWriter w("body");
   w("file", b.file)("animation", b.animation)("dress_at_s", b.dress_at_s)("start_s", b.start_s)("end_s", b.end_s);
-  w("walk_in_place", b.walk_in_place)("fps", b.fps)("shape", b.shape)("radius", double(b.radius));
+  w("walk_in_place", b.walk_in_place)("fps", b.fps)("move_between_frames", b.move_between_frames);
+  w("shape", b.shape)("radius", double(b.radius));
   w("center", b.center)("velocity", b.velocity)("move_s", b.move_s);
   return w.str();
 }

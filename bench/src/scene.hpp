@@ -20,6 +20,8 @@ struct BodySpec {
   double end_s = -1;                  ///< < 0: the clip's end
   bool walk_in_place = true;          ///< remove the root's horizontal travel
   double fps = 60;                    ///< body frames per second of animation (collider updates)
+  bool move_between_frames = true;    ///< each cloth step sees the body at its own time (BodyBetweenFrames),
+                                      ///< not the frame's end pose
   std::string shape = "mesh";         ///< "mesh" or "sphere"
   Real radius = 0.25f;                ///< sphere radius [m]
   Vec3 center = Vec3(0, 0.5f, 0);     ///< sphere centre at t = 0 [m]

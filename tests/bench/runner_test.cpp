@@ -3,6 +3,8 @@
 
 #include "clothbench/config.h"
 #include "runner.hpp"
+#include "body_between_frames.hpp"
+#include "clothbench/sim/sphere_collider.hpp"
 
 namespace clothbench {
 namespace {
@@ -89,6 +91,34 @@ TEST(Runner, Rk45SewsAndDrapesTheSkirtWithoutDiverging) {
   ASSERT_FALSE(r.divergence) << r.divergence->reason;
   EXPECT_TRUE(r.sew.reached);
   EXPECT_LE(r.accuracy.inside_pct, 0.5);
+}
+
+}  // namespace
+}  // namespace clothbench
+
+namespace clothbench {
+namespace {
+
+// issue 18: the body between frames. A sphere of radius 0.25 m moving at 1 m/s along +x, posed at a frame's end;
+// a point 1 cm inside its leading side was 1 cm outside it 20 ms earlier, and the wrapper says so
+TEST(BodyBetweenFrames, AStepBeforeThePoseSeesTheBodyWhereItWasThen) {
+  SphereCollider sphere(Vec3::Zero(), 0.25f);
+  sphere.set_sphere(Vec3::Zero(), Vec3(1, 0, 0));
+  BodyBetweenFrames between(sphere, 0.005f);
+  Points3 p(3, 2);
+  p.col(0) = Vec3(0.24f, 0, 0);   // leading side: the surface moves outward, toward it
+  p.col(1) = Vec3(-0.24f, 0, 0);  // trailing side: the surface retreats from it
+  std::vector<Contact> c(2);
+  between.query(PointsView(p), {c.data(), c.size()});  // tau = 0: the pose itself
+  ASSERT_TRUE(c[0].hit);
+  EXPECT_NEAR(c[0].depth, -0.01f, 1e-5f);
+  between.set_time_before_pose(0.02f);
+  between.query(PointsView(p), {c.data(), c.size()});
+  EXPECT_FALSE(c[0].hit);  // not yet reached: d + (n . v) tau = -0.01 + 0.02
+  EXPECT_NEAR(c[0].depth, 0.01f, 1e-5f);
+  ASSERT_TRUE(c[1].hit);  // the retreating side held the point deeper then
+  EXPECT_NEAR(c[1].depth, -0.03f, 1e-5f);
+  EXPECT_EQ(between.name(), "sphere");
 }
 
 }  // namespace

@@ -1,0 +1,32 @@
+#pragma once
+/// The body between animation frames (issue 18): a collider holds the body posed at a frame's end, yet the cloth
+/// steps through the whole frame. BodyBetweenFrames wraps any collider and answers a step taken `tau` seconds
+/// before that pose with each contact's depth as it was then, to first order in the body's motion along its
+/// normal: d(t - tau) = d(t) + (n . v_body) tau. A surface moving outward has not yet reached the cloth it holds
+/// at the frame's end, so it sweeps the cloth out over the frame's steps instead of swallowing it at once; the
+/// last step of a frame (tau = 0) sees the posed body exactly. Only contacts the inner collider reports as hit
+/// carry a normal and a body velocity; a point the body reaches only before the pose (a retreating surface) is
+/// left as the inner collider answered it.
+#include "clothbench/sim/collider.hpp"
+
+namespace clothbench {
+
+class BodyBetweenFrames final : public Collider {
+ public:
+  /// `tol`: the hit distance of the inner collider's options [m] (ColliderOptions::tol).
+  BodyBetweenFrames(Collider& inner, Real tol) : inner_(inner), tol_(tol) {}
+  std::string_view name() const override { return inner_.name(); }
+  void set_body(const BodyFrame& body) override { inner_.set_body(body); }
+  void update_body(const BodyFrame& body) override { inner_.update_body(body); }
+  /// The next queries are answered `tau` >= 0 seconds before the pose of the last set_body/update_body.
+  void set_time_before_pose(Real tau) { tau_ = tau; }
+  void query(PointsView points, ContactsOut out) override;
+  CollideStats stats() const override { return inner_.stats(); }
+
+ private:
+  Collider& inner_;
+  Real tol_;
+  Real tau_ = 0;
+};
+
+}  // namespace clothbench
