@@ -293,11 +293,16 @@ bool advance_frame(const BodySource& source, double t, double frame_dt, long ste
   skinning_ms += skin.ms();
   if (auto* sphere = dynamic_cast<SphereCollider*>(&inner)) sphere->set_sphere(source.sphere_center(t), frame.velocities.col(0));
   collider.update_body(frame);
-  if (!sim.mesh().attached.empty()) sim.follow_attachments(frame);
+  const bool attached = !sim.mesh().attached.empty();
+  if (attached && !between) sim.follow_attachments(frame);
   bool alive = true;
   sim.set_collider(&collider);
   for (long s = 0; s < steps && alive; ++s) {
-    collider.set_time_before_pose(between ? Real(frame_dt * double(steps - 1 - s) / double(steps)) : Real(0));
+    const Real tau = between ? Real(frame_dt * double(steps - 1 - s) / double(steps)) : Real(0);
+    collider.set_time_before_pose(tau);
+    // attached vertices start the step where the body had them a step before tau, and the step's dt v brings
+    // them to tau (held once per frame, they would run a frame ahead of the body and jump back)
+    if (attached && between) sim.follow_attachments(frame, tau + sim.dt());
     alive = sim.step();
   }
   collider.set_time_before_pose(0);

@@ -488,7 +488,7 @@ void Simulator::attach(const BodyFrame& body) {
   }
 }
 
-void Simulator::follow_attachments(const BodyFrame& body) {
+void Simulator::follow_attachments(const BodyFrame& body, Real time_before) {
   for (std::size_t i = 0; i < attach_tri_.size(); ++i) {
     if (attach_tri_[i] < 0) continue;
     Vec3 x = Vec3::Zero(), v = Vec3::Zero();
@@ -497,7 +497,8 @@ void Simulator::follow_attachments(const BodyFrame& body) {
       x += attach_bary_(k, static_cast<Eigen::Index>(i)) * body.positions.col(bv);
       v += attach_bary_(k, static_cast<Eigen::Index>(i)) * body.velocities.col(bv);
     }
-    col(x_, mesh_.attached[i]) = x + attach_offset_.col(static_cast<Eigen::Index>(i));
+    // where the binding point was time_before seconds before the pose (first order)
+    col(x_, mesh_.attached[i]) = x + attach_offset_.col(static_cast<Eigen::Index>(i)) - time_before * v;
     col(v_, mesh_.attached[i]) = v;
   }
 }

@@ -157,8 +157,9 @@ class Simulator {
   /// Binds the mesh's `attached` vertices to their closest triangles of `body` (Durupinar 3.2);
   /// until then they move freely (so sewing can first bring a waistband to the body).
   void attach(const BodyFrame& body);
-  /// Moves attached vertices with the body (same topology as in attach()).
-  void follow_attachments(const BodyFrame& body);
+  /// Moves attached vertices with the body (same topology as in attach()), to where they were `time_before`
+  /// seconds before the body's pose (first order in the body velocity), with the body's velocity.
+  void follow_attachments(const BodyFrame& body, Real time_before = 0);
 
   const char* integrator() const { return integrator_->name(); }
   /// Force evaluations, sub-steps, CG iterations and times of the integrator so far.
