@@ -119,8 +119,13 @@ class Progress {
  public:
   Progress(bool on, std::string label, const Simulator& sim)
       : on_(on), label_(std::move(label)), sim_(sim), start_(sim.timings().iterations) {}
-  // from now on, at most `iterations` more
-  void plan(long iterations) { end_ = sim_.timings().iterations + iterations; }
+  // from now on, at most `iterations` more; the ETA takes the rate from here (a phase's iterations can cost far
+  // more than the last one's: an object-space collider after an image-space dresser)
+  void plan(long iterations) {
+    start_ = sim_.timings().iterations;
+    end_ = start_ + iterations;
+    phase_.restart();
+  }
   template <class... A>
   void report(const char* format, A... args) {
     if (!on_ || clock_.ms() < next_ms_) return;
@@ -134,13 +139,13 @@ class Progress {
   std::string eta() const {
     const long now = sim_.timings().iterations, done = now - start_;
     if (done <= 0) return "?";
-    return format_duration(clock_.ms() / 1e3 / double(done) * double(std::max(0L, end_ - now)));
+    return format_duration(phase_.ms() / 1e3 / double(done) * double(std::max(0L, end_ - now)));
   }
   bool on_;
   std::string label_;
   const Simulator& sim_;
   long start_, end_ = 0;
-  Stopwatch clock_;
+  Stopwatch clock_, phase_;
   double next_ms_ = 1000;
 };
 
@@ -329,6 +334,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   }
   sim.set_collider(&collider);
   collider.update_body(frame);
+  progress.plan(frames * steps);  // the measured window's collider sets the pace from here
   PhaseClock clock{sim};
   const double update_before = collider.stats().update_ms;
   double not_animation_ms = 0;
