@@ -20,6 +20,7 @@ class BodyBetweenFrames final : public Collider {
   void update_body(const BodyFrame& body) override { inner_.update_body(body); }
   /// The next queries are answered `tau` >= 0 seconds before the pose of the last set_body/update_body.
   void set_time_before_pose(Real tau) { tau_ = tau; }
+  Collider& inner() const { return inner_; }
   void query(PointsView points, ContactsOut out) override;
   CollideStats stats() const override { return inner_.stats(); }
 

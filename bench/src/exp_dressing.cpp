@@ -57,7 +57,6 @@ const T1Garment kT1[] = {{"shirt", "dressing/shirt.toml", 1800}, {"dress", "dres
 // about 40 ms per iteration on the dress
 const std::vector<std::string> kT1Budget{"stop.sew_max_s=0.6", "stop.drape_max_s=0.4"};
 
-
 // FCL in the stable regime (~7,000 iterations at 17-33 ms) alone would take 6 of the 20 minutes: its rows stop
 // each phase after this many iterations, enough for its time per iteration (the rows say so)
 constexpr long kFclStableCap = 800;

@@ -26,7 +26,6 @@ class MarkdownTable {
 /// Least squares y = a + b x over the points, and its R^2.
 void linear_fit(const std::vector<double>& x, const std::vector<double>& y, double& a, double& b, double& r2);
 
-/// What an experiment may use: cached scene runs, output writers, the options of the command.
 /// The solver regimes the reproduction tables report side by side (issue 17): ours, then the papers' clock.
 inline constexpr const char* kRegimes[] = {"stable", "papers"};
 /// What names a run in a regime other than the stable one: SEP + regime (rows, pictures); empty for stable.
@@ -34,6 +33,7 @@ inline std::string regime_suffix(const std::string& regime, const std::string& s
   return regime == "stable" ? "" : sep + regime;
 }
 
+/// What an experiment may use: cached scene runs, output writers, the options of the command.
 class ExperimentContext {
  public:
   ExperimentContext(std::string out_dir, bool quick, int repetitions);

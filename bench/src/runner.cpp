@@ -292,11 +292,11 @@ double estimate_seconds(const Simulator& sim, Collider& dresser, Collider& colli
 // the frame; with body.move_between_frames each step sees the body where it was at the step's time
 // (BodyBetweenFrames), else the frame's end pose throughout
 bool advance_frame(const BodySource& source, double t, double frame_dt, long steps, Simulator& sim,
-                   BodyBetweenFrames& collider, Collider& inner, bool between, BodyFrame& frame, double& skinning_ms) {
+                   BodyBetweenFrames& collider, bool between, BodyFrame& frame, double& skinning_ms) {
   Stopwatch skin;
   source.frame_into(frame, t);
   skinning_ms += skin.ms();
-  if (auto* sphere = dynamic_cast<SphereCollider*>(&inner)) sphere->set_sphere(source.sphere_center(t), frame.velocities.col(0));
+  if (auto* sphere = dynamic_cast<SphereCollider*>(&collider.inner())) sphere->set_sphere(source.sphere_center(t), frame.velocities.col(0));
   collider.update_body(frame);
   const bool attached = !sim.mesh().attached.empty();
   if (attached && !between) sim.follow_attachments(frame);
@@ -310,7 +310,6 @@ bool advance_frame(const BodySource& source, double t, double frame_dt, long ste
     if (attached && between) sim.follow_attachments(frame, tau + sim.dt());
     alive = sim.step();
   }
-  collider.set_time_before_pose(0);
   return alive;
 }
 
@@ -329,10 +328,9 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   BodyBetweenFrames dresser_between(dresser, tol), collider_between(collider, tol);
   for (long f = 1; f <= lead_in && alive; ++f) {
     alive = advance_frame(source, source.dress_time() + double(f) * frame_dt, frame_dt, steps, sim, dresser_between,
-                          dresser, between, frame, unmeasured_ms);
+                          between, frame, unmeasured_ms);
     progress.report("animate (lead-in): frame %ld of %ld", f, lead_in);
   }
-  sim.set_collider(&collider);
   collider.update_body(frame);
   progress.plan(frames * steps);  // the measured window's collider sets the pace from here
   PhaseClock clock{sim};
@@ -340,7 +338,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   double not_animation_ms = 0;
   for (long f = 1; f <= frames && alive; ++f) {
     const double t = source.start() + double(f) * frame_dt;
-    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, collider, between, frame, r.skinning_ms);
+    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, frame, r.skinning_ms);
     ++r.frames;
     r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
     Stopwatch outside;  // the oracle and the caller's callback are not the animation's time
