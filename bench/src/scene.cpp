@@ -238,6 +238,8 @@ void read_collider(Section s, Scene& scene) {
   s.flag("float_maps", o.float_maps);
   s.number("max_speed", o.max_speed, 1e-3, 1e3);
   s.number("threads", o.threads, 1, 256);
+  s.flag("coherent", o.coherent);
+  s.number("voxel_size", o.voxel_size, 1e-4, 0.1);
   s.finish();
 }
 
@@ -398,7 +400,8 @@ std::string collider_config(const Scene& s) {
   ConfigWriter w("collider");
   w("name", s.collider)("dress_with", s.dress_with)("tol", double(o.tol))("search_radius", double(o.search_radius));
   w("map_size", o.map_size)("side_layer", o.side_layer)("fit_extent", o.fit_extent)("float_maps", o.float_maps);
-  w("max_speed", double(o.max_speed))("threads", o.threads);
+  w("max_speed", double(o.max_speed))("threads", o.threads)("coherent", o.coherent);
+  w("voxel_size", double(o.voxel_size));
   return w.str();
 }
 

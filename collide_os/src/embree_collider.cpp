@@ -17,6 +17,7 @@ struct EmbreeCollider::Impl {
   BodyFrame body;        // the current frame (normals and velocities interpolated from it)
   PseudoNormals pseudo;  // sign of the depth; points into body.triangles
   Box3 box;              // bounding box of body.positions [m]
+  detail::Coherence coherence;  // per-point bounds between queries (options.coherent)
   bool has_body = false;
   CollideStats stats;
 
@@ -24,22 +25,29 @@ struct EmbreeCollider::Impl {
     stats.threads = std::max(1, o.threads);
   }
 
-  // answers points [begin, end); returns hits and degenerate points
-  std::pair<std::int64_t, std::int64_t> answer(PointsView points, ContactsOut out, std::size_t begin,
-                                               std::size_t end) const {
-    std::int64_t hits = 0, degenerate = 0;
+  // what one worker counted
+  struct Counts {
+    std::int64_t hits = 0, degenerate = 0, searches = 0;
+  };
+
+  // answers points [begin, end) with their memory (nullptr: from scratch)
+  Counts answer(PointsView points, ContactsOut out, detail::PointMemory* memory, std::size_t begin,
+                std::size_t end) const {
+    Counts n;
     const auto find = [this](const Vec3& p, Real radius) { return scene.closest(p, radius); };
     for (std::size_t i = begin; i < end; ++i) {
       const Vec3 p = points[i];
       if (!has_body || !p.allFinite()) {
         out[i] = Contact{};
-        ++degenerate;
+        ++n.degenerate;
         continue;
       }
-      out[i] = detail::answer_point(body, pseudo, box, p, options, find);
-      hits += out[i].hit;
+      out[i] = memory ? detail::answer_point(body, pseudo, box, p, options, find, memory[i], coherence.body_moved(),
+                                             n.searches)
+                      : detail::answer_point(body, pseudo, box, p, options, find, n.searches);
+      n.hits += out[i].hit;
     }
-    return {hits, degenerate};
+    return n;
   }
 };
 
@@ -54,7 +62,8 @@ void EmbreeCollider::set_body(const BodyFrame& body) {
   impl_->body = body;
   impl_->pseudo = PseudoNormals(impl_->body);
   impl_->box = bounding_box(impl_->body.positions);
-  impl_->scene.build(impl_->body);
+  impl_->coherence.forget();
+  impl_->scene.build(impl_->body, impl_->body.moving);
   impl_->has_body = true;
   impl_->stats.setup_ms += sw.ms();
 }
@@ -62,10 +71,11 @@ void EmbreeCollider::set_body(const BodyFrame& body) {
 void EmbreeCollider::update_body(const BodyFrame& body) {
   Stopwatch sw;
   detail::check_update(impl_->body, impl_->has_body, body, "embree collider");
+  impl_->coherence.body_moves(impl_->body.positions, body.positions);
   detail::adopt_frame(impl_->body, body);
   impl_->pseudo = PseudoNormals(impl_->body);
   impl_->box = bounding_box(impl_->body.positions);
-  impl_->scene.refit(impl_->body.positions);
+  impl_->scene.refit(impl_->body);
   impl_->stats.update_ms += sw.ms();
   ++impl_->stats.updates;
 }
@@ -75,22 +85,25 @@ void EmbreeCollider::query(PointsView points, ContactsOut out) {
   // contiguous chunks, one per worker; the calling thread takes the first
   const std::size_t workers = std::min<std::size_t>(impl_->stats.threads, std::max<std::size_t>(1, points.count / 256));
   const std::size_t chunk = (points.count + workers - 1) / std::max<std::size_t>(1, workers);
-  std::vector<std::pair<std::int64_t, std::int64_t>> counts(workers);
+  detail::PointMemory* memory =
+      impl_->options.coherent && impl_->has_body ? impl_->coherence.memory(points.xyz, points.count) : nullptr;
+  std::vector<Impl::Counts> counts(workers);
   std::vector<std::thread> pool;
   for (std::size_t w = 1; w < workers; ++w) {
     const std::size_t begin = std::min(points.count, w * chunk), end = std::min(points.count, begin + chunk);
     try {
-      pool.emplace_back([&, w, begin, end] { counts[w] = impl_->answer(points, out, begin, end); });
+      pool.emplace_back([&, w, begin, end] { counts[w] = impl_->answer(points, out, memory, begin, end); });
     } catch (const std::system_error&) {  // no thread to be had: answer this chunk here
-      counts[w] = impl_->answer(points, out, begin, end);
+      counts[w] = impl_->answer(points, out, memory, begin, end);
     }
   }
-  counts[0] = impl_->answer(points, out, 0, std::min(points.count, chunk));
+  counts[0] = impl_->answer(points, out, memory, 0, std::min(points.count, chunk));
   for (auto& t : pool) t.join();
   // cumulative counters
-  for (const auto& [hits, degenerate] : counts) {
-    impl_->stats.hits += hits;
-    impl_->stats.degenerate += degenerate;
+  for (const Impl::Counts& n : counts) {
+    impl_->stats.hits += n.hits;
+    impl_->stats.degenerate += n.degenerate;
+    impl_->stats.searches += n.searches;
   }
   impl_->stats.points += static_cast<std::int64_t>(points.count);
   ++impl_->stats.queries;

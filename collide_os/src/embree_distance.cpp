@@ -25,7 +25,7 @@ void EmbreeDistance::set_body(const BodyFrame& body) {
   impl_->has_body = false;
   impl_->body = body;
   impl_->pseudo = PseudoNormals(impl_->body);
-  impl_->scene.build(impl_->body);
+  impl_->scene.build(impl_->body, impl_->body.moving);
   impl_->has_body = true;
 }
 
@@ -33,7 +33,7 @@ void EmbreeDistance::update_body(const BodyFrame& body) {
   detail::check_update(impl_->body, impl_->has_body, body, "embree distance");
   impl_->body.positions = body.positions;
   impl_->pseudo = PseudoNormals(impl_->body);
-  impl_->scene.refit(impl_->body.positions);
+  impl_->scene.refit(impl_->body);
 }
 
 void EmbreeDistance::signed_distance(PointsView points, Real* depth_out) const {

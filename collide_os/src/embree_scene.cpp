@@ -69,7 +69,7 @@ void EmbreeScene::check(const std::string& what) {
   throw std::runtime_error("embree: " + what + " failed: " + message);
 }
 
-void EmbreeScene::build(const BodyFrame& body) {
+void EmbreeScene::build(const BodyFrame& body, bool moving) {
   release_scene();
   // shared buffers: Embree reads 16 bytes per vertex, hence the spare float at the end
   const std::size_t nv = static_cast<std::size_t>(body.vertex_count());
@@ -80,12 +80,14 @@ void EmbreeScene::build(const BodyFrame& body) {
   std::transform(body.triangles.data(), body.triangles.data() + 3 * nt, indices_.begin(),
                  [](std::int32_t i) { return static_cast<std::uint32_t>(i); });
 
-  // dynamic scene, LOW build quality, REFIT geometry: vertex updates refit the BVH; robust rays
+  // a moving body: dynamic scene, LOW build quality, REFIT geometry (vertex updates refit the
+  // BVH); a static one: HIGH quality (spatial splits, tighter boxes); robust rays either way
+  moving_ = moving;
   scene_ = rtcNewScene(device_);
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_LOW);
+  rtcSetSceneFlags(scene_, moving ? RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene_, moving ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_HIGH);
   geometry_ = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetGeometryBuildQuality(geometry_, RTC_BUILD_QUALITY_REFIT);
+  rtcSetGeometryBuildQuality(geometry_, moving ? RTC_BUILD_QUALITY_REFIT : RTC_BUILD_QUALITY_HIGH);
   rtcSetSharedGeometryBuffer(geometry_, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices_.data(), 0,
                              3 * sizeof(float), nv);
   rtcSetSharedGeometryBuffer(geometry_, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices_.data(), 0,
@@ -96,8 +98,11 @@ void EmbreeScene::build(const BodyFrame& body) {
   check("building the body scene");
 }
 
-void EmbreeScene::refit(const Points3& positions) {
+void EmbreeScene::refit(const BodyFrame& body) {
+  // the first motion of a body built static rebuilds it for refitting
+  if (!moving_) return build(body, true);
   // overwrite the shared buffer in place, then refit
+  const Points3& positions = body.positions;
   std::copy(positions.data(), positions.data() + positions.size(), vertices_.begin());
   rtcUpdateGeometryBuffer(geometry_, RTC_BUFFER_TYPE_VERTEX, 0);
   rtcCommitGeometry(geometry_);

@@ -1,5 +1,5 @@
 #pragma once
-// internal: one Embree device and dynamic scene over a body, exact closest points on it
+// internal: one Embree device and scene over a body, exact closest points on it
 #include <embree3/rtcore.h>
 
 #include <cstdint>
@@ -11,9 +11,9 @@
 namespace clothbench::detail {
 
 /// Owns an Embree device, scene and triangle geometry (non-copyable, not movable: the device
-/// error callback points at it). The scene is flagged dynamic with build quality LOW and the
-/// geometry REFIT, so refit() updates the BVH instead of rebuilding it; it is also flagged robust,
-/// so segment queries keep full arithmetic accuracy.
+/// error callback points at it). A static body is built at quality HIGH; a moving one is flagged
+/// dynamic with build quality LOW and the geometry REFIT, so refit() updates the BVH instead of
+/// rebuilding it. Flagged robust, so segment queries keep full arithmetic accuracy.
 class EmbreeScene {
  public:
   /// threads: Embree build threads (>= 1). Throws std::runtime_error when no device opens.
@@ -22,11 +22,12 @@ class EmbreeScene {
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  /// Builds the BVH over the body's positions and triangles (validated by the caller).
-  /// Throws std::runtime_error naming the Embree error.
-  void build(const BodyFrame& body);
-  /// Refits the BVH to new positions (3 x nv, same nv as build). Throws std::runtime_error.
-  void refit(const Points3& positions);
+  /// Builds the BVH over the body's positions and triangles (validated by the caller), for
+  /// refitting when `moving`. Throws std::runtime_error naming the Embree error.
+  void build(const BodyFrame& body, bool moving);
+  /// Refits the BVH to the body's new positions (same topology as build); a BVH built static is
+  /// rebuilt for refitting first. Throws std::runtime_error.
+  void refit(const BodyFrame& body);
   /// Exact closest point of the body to p closer than `radius` [m] (infinity: unbounded);
   /// triangle = -1 when none is. Thread-safe; never throws.
   ClosestPoint closest(const Vec3& p, Real radius) const;
@@ -44,6 +45,7 @@ class EmbreeScene {
   std::vector<float> vertices_;         // shared vertex buffer: xyz per vertex + 1 spare float (3 nv + 1) [m]
   std::vector<std::uint32_t> indices_;  // shared index buffer (3 nt)
   std::string error_;                   // last message from the device error callback
+  bool moving_ = false;                 // built dynamic, for refitting
 };
 
 }  // namespace clothbench::detail

@@ -14,7 +14,7 @@ namespace clothbench {
 
 namespace {
 
-using Mesh = fcl::BVHModel<fcl::OBBRSSd>;
+using Mesh = fcl::BVHModel<fcl::kIOSd>;
 
 fcl::Vector3d to_double(const Points3& positions, Eigen::Index i) { return positions.col(i).cast<double>(); }
 
@@ -22,12 +22,13 @@ fcl::Vector3d to_double(const Points3& positions, Eigen::Index i) { return posit
 
 struct FclCollider::Impl {
   ColliderOptions options;
-  std::shared_ptr<Mesh> mesh;            // OBBRSS tree over the body, double precision
+  std::shared_ptr<Mesh> mesh;            // kIOS tree over the body, double precision
   fcl::Sphered point{0.0};               // the query point as a sphere of radius 0
   fcl::DistanceRequestd request{false};  // nearest triangle only; the closest point is ours
   BodyFrame body;                        // the current frame (exact closest points in float)
   PseudoNormals pseudo;                  // sign of the depth; points into body.triangles
   Box3 box;                              // bounding box of body.positions [m]
+  detail::Coherence coherence;           // per-point bounds between queries (options.coherent)
   bool has_body = false;
   CollideStats stats;
 
@@ -62,7 +63,8 @@ void FclCollider::set_body(const BodyFrame& body) {
   impl_->body = body;
   impl_->pseudo = PseudoNormals(impl_->body);
   impl_->box = bounding_box(impl_->body.positions);
-  // conversion to double, then the OBBRSS tree
+  impl_->coherence.forget();
+  // conversion to double, then the kIOS tree
   std::vector<fcl::Vector3d> vertices(static_cast<std::size_t>(body.vertex_count()));
   for (Eigen::Index i = 0; i < body.positions.cols(); ++i) vertices[std::size_t(i)] = to_double(body.positions, i);
   std::vector<fcl::Triangle> triangles(static_cast<std::size_t>(body.triangle_count()));
@@ -72,7 +74,7 @@ void FclCollider::set_body(const BodyFrame& body) {
   auto mesh = std::make_shared<Mesh>();
   if (mesh->beginModel(body.triangle_count(), body.vertex_count()) != fcl::BVH_OK ||
       mesh->addSubModel(vertices, triangles) != fcl::BVH_OK || mesh->endModel() != fcl::BVH_OK)
-    throw std::runtime_error("fcl collider: building the OBBRSS tree failed");
+    throw std::runtime_error("fcl collider: building the kIOS tree failed");
   impl_->mesh = std::move(mesh);
   impl_->has_body = true;
   impl_->stats.setup_ms += sw.ms();
@@ -81,11 +83,12 @@ void FclCollider::set_body(const BodyFrame& body) {
 void FclCollider::update_body(const BodyFrame& body) {
   Stopwatch sw;
   detail::check_update(impl_->body, impl_->has_body, body, "fcl collider");
+  impl_->coherence.body_moves(impl_->body.positions, body.positions);
   detail::adopt_frame(impl_->body, body);
   impl_->pseudo = PseudoNormals(impl_->body);
   impl_->box = bounding_box(impl_->body.positions);
   // refit every node from its triangles, top-down (no rebuild): FCL's bottom-up refit merges
-  // children with OBBRSS operator+, which gave wrong nearest triangles on the walking body
+  // children with the bounding volumes' operator+ (OBBRSS at the time), which gave wrong nearest triangles on the walking body
   // (1981 of 2000 points off); FCL fits each node over the previous and the new vertices
   Mesh& mesh = *impl_->mesh;
   if (mesh.beginUpdateModel() != fcl::BVH_OK) throw std::runtime_error("fcl collider: beginUpdateModel failed");
@@ -99,6 +102,7 @@ void FclCollider::query(PointsView points, ContactsOut out) {
   Stopwatch sw;
   Impl& s = *impl_;
   const auto find = [&s](const Vec3& p, Real radius) { return s.closest(p, radius); };
+  detail::PointMemory* memory = s.options.coherent && s.has_body ? s.coherence.memory(points.xyz, points.count) : nullptr;
   for (std::size_t i = 0; i < points.count; ++i) {
     const Vec3 p = points[i];
     if (!s.has_body || !p.allFinite()) {
@@ -106,7 +110,9 @@ void FclCollider::query(PointsView points, ContactsOut out) {
       ++s.stats.degenerate;
       continue;
     }
-    out[i] = detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find);
+    out[i] = memory ? detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, memory[i], s.coherence.body_moved(),
+                                             s.stats.searches)
+                    : detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, s.stats.searches);
     s.stats.hits += out[i].hit;
   }
   s.stats.points += static_cast<std::int64_t>(points.count);

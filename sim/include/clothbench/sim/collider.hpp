@@ -48,6 +48,8 @@ struct CollideStats {
   std::int64_t points = 0;    ///< points queried
   std::int64_t hits = 0;      ///< points answered hit
   std::int64_t degenerate = 0;///< points that could not be answered (NaN input, ...): hit=false
+  std::int64_t searches = 0;  ///< object space: points that needed a closest-point search (the
+                              ///< rest were answered from their bounds: box, temporal coherence)
   int threads = 1;            ///< worker threads used by the backend
 };
 
@@ -61,6 +63,9 @@ struct ColliderOptions {
   bool float_maps = true;       ///< image space: float targets (false: 8-bit colours, Eq. 6/9)
   Real max_speed = 3.0f;        ///< image space, 8-bit velocity encoding: maxv [m/s] (walking Eq. 9)
   int threads = 1;              ///< object space: worker threads (embree)
+  bool coherent = true;         ///< object space: each point's bound and closest triangle carried
+                                ///< between queries (false: every point searched from scratch)
+  Real voxel_size = 0.002f;     ///< vdb: voxel edge of the body's signed distance field [m]
 };
 
 /// Pluggable cloth-body collision detection. Non-copyable; owns its GL/FCL/Embree handles.
