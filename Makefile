@@ -6,7 +6,8 @@ JOBS ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 PACKAGES := cmake g++ make pkg-config libeigen3-dev libfcl-dev libembree-dev libosmesa6-dev \
             libassimp-dev assimp-testmodels libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
-            libtomlplusplus-dev nlohmann-json3-dev libpng-dev python3-matplotlib libboost-dev
+            libtomlplusplus-dev nlohmann-json3-dev libpng-dev python3-matplotlib libboost-dev \
+            libopenvdb-dev libboost-iostreams-dev
 # what only `make reproduce` needs (CI's `make test` stays lean): ffmpeg for the walking video
 REPRODUCE_PACKAGES := ffmpeg
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)

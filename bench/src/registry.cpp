@@ -17,6 +17,10 @@
 #include "clothbench/collide_os/embree_collider.hpp"
 #define CLOTHBENCH_HAS_EMBREE 1
 #endif
+#if defined(CLOTHBENCH_WITH_VDB) && __has_include("clothbench/collide_os/vdb_collider.hpp")
+#include "clothbench/collide_os/vdb_collider.hpp"
+#define CLOTHBENCH_HAS_VDB 1
+#endif
 
 namespace clothbench {
 
@@ -38,8 +42,10 @@ std::vector<Entry> entries() {
   e.push_back({{"is-gl", is_desc + "rendered with OpenGL (OSMesa)", false, "CLOTHBENCH_WITH_GL"}, {}});
 #endif
   e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", true, ""}, make_is_cpu_collider});
-  const std::string fcl_desc = "object space: FCL OBBRSS tree, closest point per query, refit";
-  const std::string embree_desc = "object space: Embree BVH, rtcPointQuery closest point, refit";
+  const std::string fcl_desc = "object space: FCL kIOS tree, closest point per query (temporal coherence), refit";
+  const std::string embree_desc = "object space: Embree BVH, rtcPointQuery closest point (temporal coherence), refit";
+  const std::string vdb_desc =
+      "object space: OpenVDB narrow-band signed distance field, trilinear depth and gradient normal, rebuilt per frame";
 #ifdef CLOTHBENCH_HAS_FCL
   e.push_back({{"fcl", fcl_desc, true, "CLOTHBENCH_WITH_FCL"}, make_fcl_collider});
 #else
@@ -49,6 +55,11 @@ std::vector<Entry> entries() {
   e.push_back({{"embree", embree_desc, true, "CLOTHBENCH_WITH_EMBREE"}, make_embree_collider});
 #else
   e.push_back({{"embree", embree_desc, false, "CLOTHBENCH_WITH_EMBREE"}, {}});
+#endif
+#ifdef CLOTHBENCH_HAS_VDB
+  e.push_back({{"vdb", vdb_desc, true, "CLOTHBENCH_WITH_VDB"}, make_vdb_collider});
+#else
+  e.push_back({{"vdb", vdb_desc, false, "CLOTHBENCH_WITH_VDB"}, {}});
 #endif
   e.push_back({{"brute", "exact, every triangle per point (tests and oracle reference)", true, ""},
                [](const ColliderOptions& o) { return std::make_unique<BruteForceCollider>(o); }});

@@ -1,12 +1,14 @@
 // Conformance: every collider in the registry against `brute` (exact) on analytic bodies, the
 // real body at rest and one walking frame (moving: body velocities compared too).
 // The brute reference is computed once per process and case (ctest runs each test alone).
-// Object-space colliders must agree exactly (hit/no-hit >= 99.99 %, depth 1e-5 m, normal 1 deg,
-// velocity 1 % or 1e-4 m/s). Image-space colliders ("is-*") are skipped here: their looser,
-// resolution-dependent tolerance test lives in tests/collide_is.
+// Object-space colliders on exact geometry (fcl, embree) must agree exactly (hit/no-hit >= 99.99 %,
+// depth 1e-5 m, normal 1 deg, velocity 1 % or 1e-4 m/s). `vdb` samples a signed distance field of
+// voxel h = 2 mm (the default): see vdb_tolerance(). Image-space colliders ("is-*") are skipped
+// here: their looser, resolution-dependent tolerance test lives in tests/collide_is.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -73,6 +75,41 @@ const std::optional<Case>& get_case(const std::string& name) {
 
 using Param = std::tuple<std::string, std::string>;  // collider, body case
 
+// what a collider must meet against brute; quantiles are over the points both answer hit
+constexpr double kAny = std::numeric_limits<double>::infinity();
+struct Tolerance {
+  double shell = 0;            // hit/no-hit mismatches allowed where brute's depth is this close to tol [m]
+  double agreement = 0.9999;   // hit/no-hit agreement off that shell
+  double depth_max = 1e-5, depth_p99 = kAny;  // [m]
+  double normal_max = 1.0, normal_p90 = kAny; // [deg]
+  double velocity_max = 1.0, velocity_p99 = kAny;  // x max(1 % of |v|, 1e-4 m/s)
+};
+
+// vdb at the default voxel h = 2 mm. Analytic bodies: hit/no-hit agrees off a one-voxel shell
+// around tol (the trilinear depth is off by a fraction of a voxel there), depth within h / 4 (max),
+// normal (the field's gradient, against brute's barycentric vertex normal on 3.75 to 5.6 degree
+// facets) within 10 deg. The MakeHuman body has surfaces inside other parts (eyes, mouth) and
+// gaps thinner than a voxel (toes): about 2 % of its surface, where the field answers for the
+// solid and brute for each sheet (errors up to 2 cm and 180 deg there), and points near the
+// medial axes of limbs (up to 3 cm deep) where gradient and closest-point normal part; there:
+// agreement 99.5 %, depth within h / 4 for 99 % of points, normal within 15 deg for 90 %,
+// velocity (on the closest of the cell's triangles) within the exact tolerance for 99 %.
+Tolerance vdb_tolerance(const std::string& case_name) {
+  Tolerance t;
+  t.shell = 0.002;
+  if (case_name.rfind("body", 0) != 0) {
+    t.depth_max = 0.0005;
+    t.normal_max = 10.0;
+    return t;
+  }
+  t.agreement = 0.995;
+  t.depth_max = t.normal_max = t.velocity_max = kAny;
+  t.depth_p99 = 0.0005;
+  t.normal_p90 = 15.0;
+  t.velocity_p99 = 1.0;
+  return t;
+}
+
 class Conformance : public ::testing::TestWithParam<Param> {};
 
 TEST_P(Conformance, AgreesWithBrute) {
@@ -92,12 +129,17 @@ TEST_P(Conformance, AgreesWithBrute) {
   std::vector<Contact> got(c->reference.size());
   collider->query(c->points, {got.data(), got.size()});
 
-  const test::ContactDiff d = test::compare_contacts(got, c->reference);
+  const Tolerance tol = collider_name == "vdb" ? vdb_tolerance(case_name) : Tolerance{};
+  const test::ContactDiff d = test::compare_contacts(got, c->reference, ColliderOptions{}.tol, tol.shell);
   SCOPED_TRACE(collider_name + " on " + case_name + ": " + test::describe(d));
-  EXPECT_GE(d.hit_agreement(), 0.9999);
-  EXPECT_LE(d.depth_max, 1e-5);
-  EXPECT_LE(d.normal_max, 1.0);
-  EXPECT_LE(d.velocity_max, 1.0);
+  using Q = test::ContactDiff;
+  EXPECT_GE(d.hit_agreement_off_shell(), tol.agreement);
+  EXPECT_LE(d.depth_max, tol.depth_max);
+  EXPECT_LE(Q::quantile(d.depth_errors, 0.99), tol.depth_p99);
+  EXPECT_LE(d.normal_max, tol.normal_max);
+  EXPECT_LE(Q::quantile(d.normal_errors, 0.9), tol.normal_p90);
+  EXPECT_LE(d.velocity_max, tol.velocity_max);
+  EXPECT_LE(Q::quantile(d.velocity_errors, 0.99), tol.velocity_p99);
   EXPECT_EQ(collider->stats().points, c->points.cols());
   EXPECT_EQ(collider->stats().degenerate, 0);
 }
