@@ -114,6 +114,7 @@ void bm_query(benchmark::State& state, const std::string& name, int level, int c
   const BodyFrame& body = subdivided(level);
   ColliderOptions options;
   options.threads = static_cast<int>(state.range(0));
+  options.coherent = false;  // every repetition searches again (coherence would skip the repeated points)
   auto c = make_collider(name, options);
   c->set_body(body);
   const Points3 points = far ? points_near(body, count, 0.10f, 0.20f) : points_near(body, count, -0.03f, 0.03f);

@@ -82,24 +82,48 @@ Claim iterations_claim(ExperimentContext& ctx) {
   return c;
 }
 
+// the stable-regime object-space row of dressing-t1 for GARMENT with the lowest CD&R time, among
+// those meeting the accuracy limits when any does; empty when there is none
+std::string fastest_object_space(std::map<std::string, nlohmann::json>& rows, const std::string& garment, bool& meets) {
+  std::string best;
+  meets = false;
+  for (const char* os : {"fcl", "embree", "vdb"}) {
+    const std::string name = "dressing-t1/" + garment + "/" + os;
+    if (!rows.count(name)) continue;
+    const bool ok = rows[name].value("meets_limits", 0) == 1;
+    if (best.empty() || (ok && !meets) ||
+        (ok == meets && rows[name]["cdr_ms"].get<double>() < rows[best]["cdr_ms"].get<double>()))
+      best = name, meets = ok;
+  }
+  return best;
+}
+
 Claim speed_claim(ExperimentContext& ctx) {
   Claim c{"walking Table 1, dressing Table 1", "IS CD&R is 2-3x faster than OS", "[dressing-t1](dressing-t1.md)", "",
           kNotRun};
   auto rows = rows_of(ctx, "dressing-t1");
   if (rows.empty()) return c;
-  double worst = 1e300;
-  for (const char* g : {"shirt", "dress"})
-    for (const char* is : {"is-gl", "is-cpu"})
-      for (const char* os : {"fcl", "embree"}) {
-        const std::string a = std::string("dressing-t1/") + g + "/" + is,
-                          b = std::string("dressing-t1/") + g + "/" + os;
-        if (!rows.count(a) || !rows.count(b)) continue;
-        const double f = rows[b]["cdr_ms"].get<double>() / rows[a]["cdr_ms"].get<double>();
-        worst = std::min(worst, f);
-        c.numbers += std::string(g) + " " + os + "/" + is + " " + num(f, 0) + "x; ";
-      }
-  c.verdict =
-      worst > 3 ? "holds, by far more (at least " + num(worst, 0) + "x against Embree and FCL)" : "holds only partly";
+  double lo = 1e300, hi = 0;
+  for (const char* g : {"shirt", "dress"}) {
+    bool meets = false;
+    const std::string os = fastest_object_space(rows, g, meets);
+    if (os.empty()) continue;
+    for (const char* is : {"is-gl", "is-cpu"}) {
+      const std::string a = std::string("dressing-t1/") + g + "/" + is;
+      if (!rows.count(a)) continue;
+      const double f = rows[os]["cdr_ms"].get<double>() / rows[a]["cdr_ms"].get<double>();
+      lo = std::min(lo, f), hi = std::max(hi, f);
+      c.numbers += std::string(g) + " " + os.substr(os.rfind('/') + 1) + "/" + is + " " + num(f, 1) + "x" +
+                   (meets ? "" : " (no object-space row meets the limits)") + "; ";
+    }
+  }
+  c.numbers = "against the fastest object-space collider meeting the limits, stable regime: " + c.numbers;
+  const std::string range = num(lo, 1) + "-" + num(hi, 1) + "x";
+  c.verdict = hi == 0   ? "untestable: no garment ran with both methods"
+              : lo > 3  ? "holds, by more (" + range + ")"
+              : lo >= 2 ? (hi <= 3 ? "holds (" : "holds, at least 2x (") + range + ")"
+              : lo >= 1 ? "holds only partly: image space is faster by " + range + ", under 2x in places"
+                        : "fails in places: the fastest object-space collider is faster (" + range + ")";
   return c;
 }
 
@@ -126,9 +150,12 @@ Claim linear_claim(ExperimentContext& ctx) {
   return c;
 }
 
-// per-point query cost [µs] of a collider on a body
+// per-point query cost [µs] of a collider on a body: object space searches every point each time
+// (no temporal coherence, which would skip the repeated queries)
 double query_us(const std::string& collider, const BodyFrame& body, const Points3& points) {
-  auto c = make_collider(collider);
+  ColliderOptions options;
+  options.coherent = false;
+  auto c = make_collider(collider, options);
   c->set_body(body);
   std::vector<Contact> out(static_cast<std::size_t>(points.cols()));
   Stopwatch clock;
@@ -153,13 +180,15 @@ Claim faces_claim(ExperimentContext& ctx, const BodyFrame& body) {
   std::map<std::string, std::vector<double>> cost;
   for (int level = 0; level < 3; ++level) {
     if (level) b = subdivide_body(b);
-    for (const auto& col : ctx.colliders({"is-cpu", "embree", "fcl"})) cost[col].push_back(query_us(col, b, points));
+    for (const auto& col : ctx.colliders({"is-cpu", "embree", "fcl", "vdb"})) cost[col].push_back(query_us(col, b, points));
     c.numbers += std::to_string(b.triangles.cols()) + " triangles: ";
     for (const auto& [col, v] : cost) c.numbers += col + " " + num(v.back(), 3) + " µs; ";
   }
   const auto growth = [&](const std::string& col) { return cost.count(col) ? cost[col][2] / cost[col][0] : NAN; };
-  c.verdict = "holds: per-point cost grows " + num(growth("is-cpu"), 1) + "x for is-cpu against " +
-              num(growth("embree"), 1) + "x (embree) and " + num(growth("fcl"), 1) + "x (fcl) at 16x the faces";
+  // holds when is-cpu's per-point cost grows by less than 1.5x over 16x the faces (constant, but for timing noise)
+  c.verdict = std::string(growth("is-cpu") < 1.5 ? "holds" : "fails") + ": per-point cost grows " +
+              num(growth("is-cpu"), 1) + "x for is-cpu against " + num(growth("embree"), 1) + "x (embree), " +
+              num(growth("fcl"), 1) + "x (fcl) and " + num(growth("vdb"), 1) + "x (vdb) at 16x the faces";
   return c;
 }
 

@@ -70,23 +70,24 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g) {
   struct Config {
     std::string collider, label;
     std::vector<std::string> sets;
-    bool smallest_only;
   };
   std::vector<Config> configs;
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (int size : {128, 256, 320, 512, 1024})
       configs.push_back(
-          {is, is + " " + std::to_string(size) + " px", {"collider.map_size=" + std::to_string(size)}, false});
+          {is, is + " " + std::to_string(size) + " px", {"collider.map_size=" + std::to_string(size)}});
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (const char* tol : {"0.0025", "0.01"})
-      configs.push_back({is, is + " 320 px tol " + std::string(tol), {std::string("collider.tol=") + tol}, false});
-  for (const auto& is : ctx.colliders({"is-gl"})) configs.push_back({is, is + " 320 px", {}, false});
-  for (const auto& os : ctx.colliders({"embree"})) configs.push_back({os, os, {}, false});
-  for (const auto& os : ctx.colliders({"fcl"})) configs.push_back({os, os, {}, true});  // the budget allows one size
+      configs.push_back({is, is + " 320 px tol " + std::string(tol), {std::string("collider.tol=") + tol}});
+  for (const auto& is : ctx.colliders({"is-gl"})) configs.push_back({is, is + " 320 px", {}});
+  for (const auto& os : ctx.colliders({"embree"})) configs.push_back({os, os, {}});
+  for (const auto& os : ctx.colliders({"fcl"})) configs.push_back({os, os, {}});
+  for (const auto& os : ctx.colliders({"vdb"}))
+    for (const char* voxel : {"0.004", "0.002"})
+      configs.push_back({os, os + " voxel " + std::string(voxel), {std::string("collider.voxel_size=") + voxel}});
   std::vector<Point> pts;
   for (const auto& c : configs)
     for (int n : g.sizes) {
-      if (c.smallest_only && n != g.sizes.front()) continue;
       const RunResult& r = ctx.run(g.scene, c.collider, sets_for(ctx, n, c.sets));
       ctx.add_row(result_row(r, std::string("pareto/") + g.name + "/" + c.label + "/" + std::to_string(n)));
       Point p;

@@ -142,6 +142,7 @@ const std::vector<Experiment>& experiments() {
     add_durupinar_experiments(e);
     add_integrator_experiments(e);
     add_stability_experiments(e);
+    add_collider_experiments(e);
     add_pareto_experiments(e);
     add_picture_experiments(e);
     add_claims_experiments(e);

@@ -88,5 +88,6 @@ void add_picture_experiments(std::vector<Experiment>& out);
 void add_stability_experiments(std::vector<Experiment>& out);
 void add_claims_experiments(std::vector<Experiment>& out);
 void add_pareto_experiments(std::vector<Experiment>& out);
+void add_collider_experiments(std::vector<Experiment>& out);
 
 }  // namespace clothbench

@@ -150,8 +150,10 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"drape_iterations", r.drape.iterations},
                      {"threads", r.threads},
                      {"converged", r.converged ? 1 : 0},
-                     {"diverged", r.divergence ? 1 : 0}};
+                     {"diverged", r.divergence ? 1 : 0},
+                     {"meets_limits", limit_misses(r).empty() ? 1 : 0}};
   if (!r.config_hash.empty()) row["config_hash"] = r.config_hash;
+  if (r.search_share > 0) row["search_share"] = r.search_share;
   if (r.frames > 0) {
     row["frames"] = r.frames;
     row["fps"] = r.animate.wall_ms > 0 ? 1e3 * double(r.frames) / r.animate.wall_ms : 0.0;

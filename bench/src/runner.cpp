@@ -468,7 +468,9 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   if (!sim->divergence())
     animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options, r);
   r.divergence = sim->divergence();
-  r.threads = collider->stats().threads;
+  const CollideStats stats = collider->stats();
+  r.threads = stats.threads;
+  r.search_share = stats.points > 0 ? double(stats.searches) / double(stats.points) : 0;
   r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&
                 (r.drape.reached || scene.stop.drape_max_s == 0) && (!source.moves() || r.animate.reached);
   r.final_body = frame;

@@ -45,6 +45,8 @@ struct RunResult {
   double skinning_ms = 0;       ///< all body frame evaluations (LBS)
   double collider_update_ms = 0;///< all collider updates (re-render / refit)
   double setup_ms = 0;          ///< collider set-up (maps rendered / BVH built)
+  double search_share = 0;      ///< object space: share of the collider's query points that needed a
+                                ///< closest-point search (CollideStats::searches); 0 for the others
   int threads = 1;
   Accuracy accuracy;            ///< vertices and (with face queries) quad midpoints, end state
   double seam_gap_max_mm = 0;
