@@ -75,7 +75,7 @@ struct Variant {
 
 std::vector<Variant> variants(ExperimentContext& ctx) {
   std::vector<Variant> out;
-  for (const auto& c : ctx.colliders({"is-gl", "is-cpu", "vdb"})) out.push_back({c, c, true});
+  for (const auto& c : ctx.colliders({"is-gl", "is-cpu", "vdb", "bbtree"})) out.push_back({c, c, true});
   for (const auto& c : ctx.colliders({"embree", "fcl"})) {
     out.push_back({c, c + " (from scratch)", false});
     out.push_back({c, c, true});
@@ -139,7 +139,10 @@ std::string body_table(ExperimentContext& ctx, const std::vector<Variant>& list)
          "near points against `brute` (exact), depth and normal where both hit; image space reads depth along the "
          "view axis from a front and a back map (the papers' method), so points beside the body and in folds "
          "(armpits, between the legs) differ from the exact closest point by design; the object-space colliders "
-         "are exact, `vdb` is exact to about a voxel where the field captures the surface.\n\n"
+         "are exact, `vdb` is exact to about a voxel where the field captures the surface. `vdb` answers points "
+         "deeper than its interior band (1 cm) or on a flat gradient exactly, over every triangle, and counts them "
+         "as searches: that, and building its pseudo-normals on the first such point of a frame, is what its near "
+         "and inside columns pay.\n\n"
       << t.str();
   return out.str();
 }

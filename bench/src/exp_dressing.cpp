@@ -11,7 +11,7 @@ namespace clothbench {
 
 namespace {
 
-const std::vector<std::string> kAll{"is-gl", "is-cpu", "fcl", "embree", "vdb"};
+const std::vector<std::string> kAll{"is-gl", "is-cpu", "fcl", "embree", "vdb", "bbtree"};
 
 bool image_space(const std::string& collider) { return collider.rfind("is-", 0) == 0; }
 
@@ -106,7 +106,7 @@ void dressing_t1(ExperimentContext& ctx) {
     const auto& wp = paper::kWalkingT1[g.product == std::string("shirt") ? 0 : 2];
     const auto& wo = paper::kWalkingT1[g.product == std::string("shirt") ? 1 : 3];
     for (const auto& is : ctx.colliders({"is-gl", "is-cpu"}))
-      for (const auto& os : ctx.colliders({"fcl", "embree", "vdb"})) {
+      for (const auto& os : ctx.colliders({"fcl", "embree", "vdb", "bbtree"})) {
         const double a = t1_run(ctx, g, is).cdr_ms_per_iteration(), b = t1_run(ctx, g, os).cdr_ms_per_iteration();
         rt.row({g.product, is, os, num(a / b, 4), num(b / a, 0) + "x", num(wp.cdr_ms / wo.cdr_ms, 2)});
       }

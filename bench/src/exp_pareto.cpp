@@ -82,6 +82,7 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g) {
   for (const auto& is : ctx.colliders({"is-gl"})) configs.push_back({is, is + " 320 px", {}});
   for (const auto& os : ctx.colliders({"embree"})) configs.push_back({os, os, {}});
   for (const auto& os : ctx.colliders({"fcl"})) configs.push_back({os, os, {}});
+  for (const auto& os : ctx.colliders({"bbtree"})) configs.push_back({os, os, {}});
   for (const auto& os : ctx.colliders({"vdb"}))
     for (const char* voxel : {"0.004", "0.002"})
       configs.push_back({os, os + " voxel " + std::string(voxel), {std::string("collider.voxel_size=") + voxel}});
@@ -184,7 +185,7 @@ void minimal(ExperimentContext& ctx) {
   };
   std::vector<Setup> setups;
   for (const auto& c : ctx.colliders({"is-cpu"})) setups.push_back({c, false}), setups.push_back({c, true});
-  for (const auto& c : ctx.colliders({"embree"})) setups.push_back({c, false});
+  for (const auto& c : ctx.colliders({"embree", "vdb", "bbtree"})) setups.push_back({c, false});
   for (const auto& l : ladders)
     for (const auto& s : setups) {
       std::string found = "none up to " + std::to_string(l.sizes.back()), inside = "-", crossings = "-", gap = "-";

@@ -74,7 +74,7 @@ std::string speed_boundaries(ExperimentContext& ctx) {
   const std::vector<double> speeds = ctx.quick() ? std::vector<double>{0.5, 8} : std::vector<double>{0.5, 1, 2, 4, 8};
   MarkdownTable t({"collider", "largest speed without failure [m/s]", "first failure",
                    "max inside % during motion at each speed", "max crossings % during motion at each speed"});
-  std::vector<std::string> colliders = ctx.colliders({"is-cpu", "is-gl", "fcl", "embree", "vdb"});
+  std::vector<std::string> colliders = ctx.colliders({"is-cpu", "is-gl", "fcl", "embree", "vdb", "bbtree"});
   colliders.insert(colliders.begin(), "sphere");
   RunOptions per_frame;
   per_frame.measure_frames = true;

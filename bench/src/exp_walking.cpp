@@ -1,4 +1,5 @@
 // walking-t2 (garments on the walking body) and walking-f8 (tablecloth on a moving sphere).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -85,10 +86,11 @@ void walking_t2(ExperimentContext& ctx) {
     std::string label, regime, row_suffix;
     std::vector<std::string> sets, colliders;
   };
-  const std::vector<std::string> all{"is-gl", "is-cpu", "fcl", "embree", "vdb"};
+  const std::vector<std::string> all{"is-gl", "is-cpu", "fcl", "embree", "vdb", "bbtree"};
   std::vector<Variant> variants;
   // vdb voxelises the skinned body again every frame (seconds each): in the stable regime only
-  const std::vector<std::string> without_vdb(all.begin(), all.end() - 1);
+  std::vector<std::string> without_vdb = all;
+  without_vdb.erase(std::find(without_vdb.begin(), without_vdb.end(), "vdb"));
   for (const std::string regime : kRegimes)
     variants.push_back({regime, regime, regime_suffix(regime, "/"), {}, regime == "stable" ? all : without_vdb});
   variants.push_back({"stable, body held per frame (ablation)", "stable", "/held", {"body.move_between_frames=false"},

@@ -17,6 +17,10 @@
 #include "clothbench/collide_os/embree_collider.hpp"
 #define CLOTHBENCH_HAS_EMBREE 1
 #endif
+#if defined(CLOTHBENCH_WITH_BBTREE) && __has_include("clothbench/collide_os/bbtree_collider.hpp")
+#include "clothbench/collide_os/bbtree_collider.hpp"
+#define CLOTHBENCH_HAS_BBTREE 1
+#endif
 #if defined(CLOTHBENCH_WITH_VDB) && __has_include("clothbench/collide_os/vdb_collider.hpp")
 #include "clothbench/collide_os/vdb_collider.hpp"
 #define CLOTHBENCH_HAS_VDB 1
@@ -44,6 +48,8 @@ std::vector<Entry> entries() {
   e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", true, ""}, make_is_cpu_collider});
   const std::string fcl_desc = "object space: FCL kIOS tree, closest point per query (temporal coherence), refit";
   const std::string embree_desc = "object space: Embree BVH, rtcPointQuery closest point (temporal coherence), refit";
+  const std::string bbtree_desc =
+      "object space, the dressing paper's own: quad tree of face bounding boxes, vertex-face test with face normals";
   const std::string vdb_desc =
       "object space: OpenVDB narrow-band signed distance field, trilinear depth and gradient normal, rebuilt per frame";
 #ifdef CLOTHBENCH_HAS_FCL
@@ -60,6 +66,11 @@ std::vector<Entry> entries() {
   e.push_back({{"vdb", vdb_desc, true, "CLOTHBENCH_WITH_VDB"}, make_vdb_collider});
 #else
   e.push_back({{"vdb", vdb_desc, false, "CLOTHBENCH_WITH_VDB"}, {}});
+#endif
+#ifdef CLOTHBENCH_HAS_BBTREE
+  e.push_back({{"bbtree", bbtree_desc, true, "CLOTHBENCH_WITH_BBTREE"}, make_bbtree_collider});
+#else
+  e.push_back({{"bbtree", bbtree_desc, false, "CLOTHBENCH_WITH_BBTREE"}, {}});
 #endif
   e.push_back({{"brute", "exact, every triangle per point (tests and oracle reference)", true, ""},
                [](const ColliderOptions& o) { return std::make_unique<BruteForceCollider>(o); }});

@@ -117,6 +117,10 @@ TEST_P(Conformance, AgreesWithBrute) {
   if (collider_name.rfind("is-", 0) == 0)
     GTEST_SKIP() << collider_name << " is image space: its tolerance test (pixel-sized depth error, "
                  << "silhouettes) lives in tests/collide_is";
+  if (collider_name == "bbtree")
+    GTEST_SKIP() << "bbtree is the dressing paper's vertex-face test with face normals, blind by design where "
+                 << "a point is deeper than tol or beside every face: its own test lives in "
+                 << "tests/collide_os/bbtree_collider_test.cpp";
   if (collider_name == "brute" && case_name.rfind("body", 0) == 0)
     GTEST_SKIP() << "brute is the reference; it is compared with itself on the analytic bodies only";
   const auto& c = get_case(case_name);
