@@ -82,15 +82,23 @@ Claim iterations_claim(ExperimentContext& ctx) {
   return c;
 }
 
+// a row within the detection's accuracy limits (inside, depth, crossings; strain and seams are the
+// solver's, the same for every collider)
+bool detection_accurate(const nlohmann::json& row) {
+  return row.value("diverged", 1) == 0 && row.value("inside_pct", 1e9) <= kAccuracyLimits.inside_pct &&
+         row.value("depth_max_mm", 1e9) <= kAccuracyLimits.depth_mm &&
+         row.value("crossings_pct", 1e9) <= kAccuracyLimits.crossings_pct;
+}
+
 // the stable-regime object-space row of dressing-t1 for GARMENT with the lowest CD&R time, among
-// those meeting the accuracy limits when any does; empty when there is none
+// those within the detection's accuracy limits when any is; empty when there is none
 std::string fastest_object_space(std::map<std::string, nlohmann::json>& rows, const std::string& garment, bool& meets) {
   std::string best;
   meets = false;
   for (const char* os : {"fcl", "embree", "vdb", "bbtree"}) {
     const std::string name = "dressing-t1/" + garment + "/" + os;
     if (!rows.count(name)) continue;
-    const bool ok = rows[name].value("meets_limits", 0) == 1;
+    const bool ok = detection_accurate(rows[name]);
     if (best.empty() || (ok && !meets) ||
         (ok == meets && rows[name]["cdr_ms"].get<double>() < rows[best]["cdr_ms"].get<double>()))
       best = name, meets = ok;
@@ -114,10 +122,11 @@ Claim speed_claim(ExperimentContext& ctx) {
       const double f = rows[os]["cdr_ms"].get<double>() / rows[a]["cdr_ms"].get<double>();
       lo = std::min(lo, f), hi = std::max(hi, f);
       c.numbers += std::string(g) + " " + os.substr(os.rfind('/') + 1) + "/" + is + " " + num(f, 1) + "x" +
-                   (meets ? "" : " (no object-space row meets the limits)") + "; ";
+                   (meets ? "" : " (no object-space row within the limits)") + "; ";
     }
   }
-  c.numbers = "against the fastest object-space collider meeting the limits, stable regime: " + c.numbers;
+  c.numbers = "against the fastest object-space collider within the detection limits (inside, depth, crossings), "
+              "stable regime: " + c.numbers;
   std::string own;  // the papers' own baseline, whatever its accuracy
   for (const char* g : {"shirt", "dress"}) {
     const std::string is = std::string("dressing-t1/") + g + "/is-cpu", os = std::string("dressing-t1/") + g + "/bbtree";
