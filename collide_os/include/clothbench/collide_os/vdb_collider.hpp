@@ -33,8 +33,8 @@ class VdbCollider final : public Collider {
   void update_body(const BodyFrame& body) override;
   /// One Contact per point: hit when the field is below tol. Outside the exterior band: hit =
   /// false, depth = the band width (a lower bound). Inside deeper than the interior band: the
-  /// exact answer of the closest triangle over the whole body (as `brute`, O(triangles) per
-  /// point; counted in deep_points()). NaN points: hit = false, counted in stats().degenerate.
+  /// exact answer of the closest triangle (found on a box tree over the triangles, as `brute`
+  /// answers; counted in deep_points() and stats().searches). NaN points: hit = false, counted in stats().degenerate.
   void query(PointsView points, ContactsOut out) override;
   CollideStats stats() const override;
 
