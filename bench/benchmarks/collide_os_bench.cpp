@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -60,24 +59,6 @@ const BodyFrame& subdivided(int level) {
   return cache.emplace(level, std::move(b)).first->second;
 }
 
-// surface points pushed along the face normal by [lo, hi] [m]; fixed seed
-Points3 points_near(const BodyFrame& body, int count, Real lo, Real hi) {
-  std::mt19937 rng(12345);
-  std::uniform_int_distribution<int> tri(0, body.triangle_count() - 1);
-  std::uniform_real_distribution<Real> unit(0, 1);
-  Points3 p(3, count);
-  for (int i = 0; i < count; ++i) {
-    const int t = tri(rng);
-    const Vec3 a = body.positions.col(body.triangles(0, t)), b = body.positions.col(body.triangles(1, t)),
-               c = body.positions.col(body.triangles(2, t));
-    Real u = unit(rng), v = unit(rng);
-    if (u + v > 1) u = 1 - u, v = 1 - v;
-    const Vec3 n = (b - a).cross(c - a).normalized();
-    p.col(i) = a + u * (b - a) + v * (c - a) + (lo + (hi - lo) * unit(rng)) * n;
-  }
-  return p;
-}
-
 void set_counters(benchmark::State& state, const Collider& c, const BodyFrame& body) {
   const CollideStats s = c.stats();
   state.counters["body_triangles"] = body.triangle_count();
@@ -117,7 +98,8 @@ void bm_query(benchmark::State& state, const std::string& name, int level, int c
   options.coherent = false;  // every repetition searches again (coherence would skip the repeated points)
   auto c = make_collider(name, options);
   c->set_body(body);
-  const Points3 points = far ? points_near(body, count, 0.10f, 0.20f) : points_near(body, count, -0.03f, 0.03f);
+  const Points3 points =
+      far ? points_off_surface(body, count, 0.10f, 0.20f, 12345) : points_off_surface(body, count, -0.03f, 0.03f, 12345);
   std::vector<Contact> out(std::size_t(points.cols()));
   for (auto _ : state) c->query(points, {out.data(), out.size()});
   state.SetItemsProcessed(state.iterations() * points.cols());
@@ -128,7 +110,7 @@ void bm_query(benchmark::State& state, const std::string& name, int level, int c
 void bm_oracle(benchmark::State& state) {
   const BodyFrame& body = bodies().a;
   const Oracle oracle(body);
-  const Points3 points = points_near(body, 10000, -0.03f, 0.03f);
+  const Points3 points = points_off_surface(body, 10000, -0.03f, 0.03f, 12345);
   std::vector<Real> d;
   for (auto _ : state) oracle.signed_distance(points, d);
   state.SetItemsProcessed(state.iterations() * points.cols());
@@ -139,7 +121,7 @@ void bm_oracle(benchmark::State& state) {
 
 void register_all() {
   for (const std::string& name : available_colliders()) {
-    if (name != "fcl" && name != "embree" && name != "brute") continue;
+    if (name != "fcl" && name != "embree" && name != "vdb" && name != "bbtree" && name != "brute") continue;
     const bool brute = name == "brute";
     benchmark::RegisterBenchmark(("build/" + name).c_str(), bm_build, name)->Unit(benchmark::kMillisecond);
     if (!brute) benchmark::RegisterBenchmark(("refit/" + name).c_str(), bm_refit, name)->Unit(benchmark::kMillisecond);

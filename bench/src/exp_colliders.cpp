@@ -9,6 +9,7 @@
 #include "clothbench/sim/brute_collider.hpp"
 #include "clothbench/sim/timer.hpp"
 #include "experiment.hpp"
+#include "oracle.hpp"
 #include "registry.hpp"
 #include "report.hpp"
 
@@ -17,24 +18,6 @@ namespace clothbench {
 namespace {
 
 constexpr Real kPi = 3.14159265358979f;
-
-// points on random body triangles (area-blind), moved along the face normal by [lo, hi] [m]
-Points3 points_off_surface(const BodyFrame& body, int count, Real lo, Real hi, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> tri(0, body.triangle_count() - 1);
-  std::uniform_real_distribution<Real> unit(0, 1);
-  Points3 p(3, count);
-  for (int i = 0; i < count; ++i) {
-    const int t = tri(rng);
-    const Vec3 a = body.positions.col(body.triangles(0, t)), b = body.positions.col(body.triangles(1, t)),
-               c = body.positions.col(body.triangles(2, t));
-    Real u = unit(rng), v = unit(rng);
-    if (u + v > 1) u = 1 - u, v = 1 - v;
-    const Vec3 n = (b - a).cross(c - a).normalized();
-    p.col(i) = a + u * (b - a) + v * (c - a) + (lo + (hi - lo) * unit(rng)) * n;
-  }
-  return p;
-}
 
 std::vector<Contact> answer(Collider& c, const Points3& points) {
   std::vector<Contact> out(static_cast<std::size_t>(points.cols()));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -197,6 +198,23 @@ Accuracy Oracle::measure(PointsView points) const {
   std::nth_element(pen.begin(), pen.begin() + std::ptrdiff_t(rank), pen.end());
   a.depth_p95_mm = pen[rank];
   return a;
+}
+
+Points3 points_off_surface(const BodyFrame& body, int count, Real lo, Real hi, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> tri(0, body.triangle_count() - 1);
+  std::uniform_real_distribution<Real> unit(0, 1);
+  Points3 p(3, count);
+  for (int i = 0; i < count; ++i) {
+    const int t = tri(rng);
+    const Vec3 a = body.positions.col(body.triangles(0, t)), b = body.positions.col(body.triangles(1, t)),
+               c = body.positions.col(body.triangles(2, t));
+    Real u = unit(rng), v = unit(rng);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    const Vec3 n = (b - a).cross(c - a).normalized();
+    p.col(i) = a + u * (b - a) + v * (c - a) + (lo + (hi - lo) * unit(rng)) * n;
+  }
+  return p;
 }
 
 }  // namespace clothbench

@@ -47,6 +47,11 @@ Pairs structural_springs(const ClothMesh& mesh);
 /// plane or a degenerate triangle.
 bool segment_crosses_triangle(const Vec3& a, const Vec3& b, const Vec3& t0, const Vec3& t1, const Vec3& t2);
 
+/// Points to measure colliders with: `count` points on random body triangles (uniform over
+/// triangles, not area), each moved along its face normal by a uniform amount in [lo, hi] [m]
+/// (< 0 inside); fixed `seed`.
+Points3 points_off_surface(const BodyFrame& body, int count, Real lo, Real hi, unsigned seed);
+
 /// Exact signed distance to one body frame. Movable, not copyable.
 class Oracle {
  public:

@@ -92,22 +92,11 @@ void BbtreeCollider::update_body(const BodyFrame& body) {
 }
 
 void BbtreeCollider::query(PointsView points, ContactsOut out) {
-  Stopwatch sw;
   Impl& s = *impl_;
-  for (std::size_t i = 0; i < points.count; ++i) {
-    const Vec3 p = points[i];
-    if (!s.has_body || !p.allFinite()) {
-      out[i] = Contact{};
-      ++s.stats.degenerate;
-      continue;
-    }
-    out[i] = s.answer(p);
-    s.stats.hits += out[i].hit;
+  detail::answer_points(points, out, s.has_body, s.stats, [&s](std::size_t, const Vec3& p) {
     ++s.stats.searches;
-  }
-  s.stats.points += static_cast<std::int64_t>(points.count);
-  ++s.stats.queries;
-  s.stats.query_ms += sw.ms();
+    return s.answer(p);
+  });
 }
 
 CollideStats BbtreeCollider::stats() const { return impl_->stats; }

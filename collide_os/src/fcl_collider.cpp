@@ -99,25 +99,14 @@ void FclCollider::update_body(const BodyFrame& body) {
 }
 
 void FclCollider::query(PointsView points, ContactsOut out) {
-  Stopwatch sw;
   Impl& s = *impl_;
   const auto find = [&s](const Vec3& p, Real radius) { return s.closest(p, radius); };
   detail::PointMemory* memory = s.options.coherent && s.has_body ? s.coherence.memory(points.xyz, points.count) : nullptr;
-  for (std::size_t i = 0; i < points.count; ++i) {
-    const Vec3 p = points[i];
-    if (!s.has_body || !p.allFinite()) {
-      out[i] = Contact{};
-      ++s.stats.degenerate;
-      continue;
-    }
-    out[i] = memory ? detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, memory[i], s.coherence.body_moved(),
-                                             s.stats.searches)
-                    : detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, s.stats.searches);
-    s.stats.hits += out[i].hit;
-  }
-  s.stats.points += static_cast<std::int64_t>(points.count);
-  ++s.stats.queries;
-  s.stats.query_ms += sw.ms();
+  detail::answer_points(points, out, s.has_body, s.stats, [&](std::size_t i, const Vec3& p) {
+    return memory ? detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, memory[i], s.coherence.body_moved(),
+                                         s.stats.searches)
+                  : detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, s.stats.searches);
+  });
 }
 
 CollideStats FclCollider::stats() const { return impl_->stats; }

@@ -11,6 +11,7 @@
 
 #include "clothbench/sim/collider.hpp"
 #include "clothbench/sim/mesh_query.hpp"
+#include "clothbench/sim/timer.hpp"
 
 namespace clothbench::detail {
 
@@ -116,6 +117,27 @@ Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const B
   m.triangle = cp.triangle;
   m.outside = c.hit ? 0 : c.depth;
   return c;
+}
+
+/// The query loop of the one-threaded object-space colliders: NaN points, and every point before
+/// a body is set, are degenerate misses; `answer(i, p)` answers the rest; counts and time go to
+/// `stats`.
+template <class Answer>
+void answer_points(PointsView points, ContactsOut out, bool has_body, CollideStats& stats, const Answer& answer) {
+  Stopwatch sw;
+  for (std::size_t i = 0; i < points.count; ++i) {
+    const Vec3 p = points[i];
+    if (!has_body || !p.allFinite()) {
+      out[i] = Contact{};
+      ++stats.degenerate;
+      continue;
+    }
+    out[i] = answer(i, p);
+    stats.hits += out[i].hit;
+  }
+  stats.points += static_cast<std::int64_t>(points.count);
+  ++stats.queries;
+  stats.query_ms += sw.ms();
 }
 
 /// Throws std::invalid_argument naming `what` when `body` cannot replace `current` in

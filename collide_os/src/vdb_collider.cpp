@@ -275,24 +275,12 @@ void VdbCollider::update_body(const BodyFrame& body) {
 }
 
 void VdbCollider::query(PointsView points, ContactsOut out) {
-  Stopwatch sw;
   Impl& s = *impl_;
   std::optional<openvdb::FloatGrid::ConstAccessor> field;
   std::optional<openvdb::Int32Grid::ConstAccessor> index;
   if (s.has_body) field.emplace(s.sdf->getConstAccessor()), index.emplace(s.closest->getConstAccessor());
-  for (std::size_t i = 0; i < points.count; ++i) {
-    const Vec3 p = points[i];
-    if (!s.has_body || !p.allFinite()) {
-      out[i] = Contact{};
-      ++s.stats.degenerate;
-      continue;
-    }
-    out[i] = s.answer(*field, *index, p);
-    s.stats.hits += out[i].hit;
-  }
-  s.stats.points += static_cast<std::int64_t>(points.count);
-  ++s.stats.queries;
-  s.stats.query_ms += sw.ms();
+  detail::answer_points(points, out, s.has_body, s.stats,
+                        [&](std::size_t, const Vec3& p) { return s.answer(*field, *index, p); });
 }
 
 CollideStats VdbCollider::stats() const { return impl_->stats; }

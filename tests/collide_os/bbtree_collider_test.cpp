@@ -10,16 +10,13 @@
 
 #include "clothbench/collide_os/bbtree_collider.hpp"
 #include "clothbench/sim/brute_collider.hpp"
+#include "contact_compare.hpp"
 #include "surface_points.hpp"
 
 namespace clothbench {
 namespace {
 
-std::vector<Contact> run(Collider& c, const Points3& points) {
-  std::vector<Contact> out(std::size_t(points.cols()));
-  c.query(points, {out.data(), out.size()});
-  return out;
-}
+using test::run;
 
 // points on a convex body within a shell of tol either side of its surface: the papers' method
 // sees them (they lie in some face's box grown by tol, projecting into a face) and answers what

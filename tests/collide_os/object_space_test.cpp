@@ -31,11 +31,7 @@ BodyFrame deformed(const BodyFrame& base, Real amount) {
   return b;
 }
 
-std::vector<Contact> run(Collider& c, const Points3& points) {
-  std::vector<Contact> out(std::size_t(points.cols()));
-  c.query(points, {out.data(), out.size()});
-  return out;
-}
+using test::run;
 
 std::vector<std::string> object_space_names() {
   std::vector<std::string> names;

@@ -18,11 +18,7 @@
 namespace clothbench {
 namespace {
 
-std::vector<Contact> run(Collider& c, const Points3& points) {
-  std::vector<Contact> out(std::size_t(points.cols()));
-  c.query(points, {out.data(), out.size()});
-  return out;
-}
+using test::run;
 
 std::vector<Contact> brute_answers(const BodyFrame& body, const Points3& points) {
   BruteForceCollider brute;

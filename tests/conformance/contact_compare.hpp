@@ -11,6 +11,13 @@
 
 namespace clothbench::test {
 
+/// The collider's answers to one query of `points`.
+inline std::vector<Contact> run(Collider& c, const Points3& points) {
+  std::vector<Contact> out(std::size_t(points.cols()));
+  c.query(points, {out.data(), out.size()});
+  return out;
+}
+
 /// Worst differences between contacts and an exact reference (depth compared where both hit).
 struct ContactDiff {
   std::size_t points = 0;
