@@ -25,28 +25,17 @@ struct EmbreeCollider::Impl {
     stats.threads = std::max(1, o.threads);
   }
 
-  // what one worker counted
-  struct Counts {
-    std::int64_t hits = 0, degenerate = 0, searches = 0;
-  };
-
-  // answers points [begin, end) with their memory (nullptr: from scratch)
-  Counts answer(PointsView points, ContactsOut out, detail::PointMemory* memory, std::size_t begin,
-                std::size_t end) const {
-    Counts n;
+  // answers points [begin, end) with their memory (nullptr: from scratch); one worker's counts
+  CollideStats answer(PointsView points, ContactsOut out, detail::PointMemory* memory, std::size_t begin,
+                      std::size_t end) const {
+    CollideStats n;
     const auto find = [this](const Vec3& p, Real radius) { return scene.closest(p, radius); };
-    for (std::size_t i = begin; i < end; ++i) {
-      const Vec3 p = points[i];
-      if (!has_body || !p.allFinite()) {
-        out[i] = Contact{};
-        ++n.degenerate;
-        continue;
-      }
-      out[i] = memory ? detail::answer_point(body, pseudo, box, p, options, find, memory[i], coherence.body_moved(),
-                                             n.searches)
-                      : detail::answer_point(body, pseudo, box, p, options, find, n.searches);
-      n.hits += out[i].hit;
-    }
+    detail::answer_points(PointsView(points.xyz + 3 * begin, end - begin), ContactsOut{out.data + begin, end - begin},
+                          has_body, n, [&](std::size_t i, const Vec3& p) {
+                            return detail::answer_point(body, pseudo, box, p, options, find,
+                                                        memory ? memory + begin + i : nullptr, coherence.body_moved(),
+                                                        n.searches);
+                          });
     return n;
   }
 };
@@ -87,7 +76,7 @@ void EmbreeCollider::query(PointsView points, ContactsOut out) {
   const std::size_t chunk = (points.count + workers - 1) / std::max<std::size_t>(1, workers);
   detail::PointMemory* memory =
       impl_->options.coherent && impl_->has_body ? impl_->coherence.memory(points.xyz, points.count) : nullptr;
-  std::vector<Impl::Counts> counts(workers);
+  std::vector<CollideStats> counts(workers);
   std::vector<std::thread> pool;
   for (std::size_t w = 1; w < workers; ++w) {
     const std::size_t begin = std::min(points.count, w * chunk), end = std::min(points.count, begin + chunk);
@@ -100,7 +89,7 @@ void EmbreeCollider::query(PointsView points, ContactsOut out) {
   counts[0] = impl_->answer(points, out, memory, 0, std::min(points.count, chunk));
   for (auto& t : pool) t.join();
   // cumulative counters
-  for (const Impl::Counts& n : counts) {
+  for (const CollideStats& n : counts) {
     impl_->stats.hits += n.hits;
     impl_->stats.degenerate += n.degenerate;
     impl_->stats.searches += n.searches;

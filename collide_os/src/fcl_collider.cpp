@@ -103,9 +103,8 @@ void FclCollider::query(PointsView points, ContactsOut out) {
   const auto find = [&s](const Vec3& p, Real radius) { return s.closest(p, radius); };
   detail::PointMemory* memory = s.options.coherent && s.has_body ? s.coherence.memory(points.xyz, points.count) : nullptr;
   detail::answer_points(points, out, s.has_body, s.stats, [&](std::size_t i, const Vec3& p) {
-    return memory ? detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, memory[i], s.coherence.body_moved(),
-                                         s.stats.searches)
-                  : detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, s.stats.searches);
+    return detail::answer_point(s.body, s.pseudo, s.box, p, s.options, find, memory ? memory + i : nullptr,
+                                s.coherence.body_moved(), s.stats.searches);
   });
 }
 

@@ -16,7 +16,7 @@
 namespace clothbench::detail {
 
 /// Contact for p from `find(p, radius)` (exact closest point strictly within radius [m], or
-/// triangle = -1), searching from scratch: within search_radius the exact answer; otherwise a point
+/// triangle = -1), searching from scratch (no memory: see the overload below): within search_radius the exact answer; otherwise a point
 /// outside the body's bounding box `box` is far outside, and for the rest an unbounded search
 /// decides inside (exact depth, hit) or far outside (hit = false, depth = search_radius, a lower
 /// bound). What ColliderOptions::coherent = false selects. Counts the point in `searches`.
@@ -80,27 +80,30 @@ class Coherence {
   double body_moved_ = 0;
 };
 
-/// Distance from p to the box (0 inside it) [m]: a lower bound of its distance to the body.
-inline Real distance_to_box(const Vec3& p, const Box3& box) {
-  return (box.min - p).cwiseMax(p - box.max).cwiseMax(Vec3::Zero()).norm();
+/// Squared distance from p to the box (0 inside it) [m^2]: a lower bound of the squared distance
+/// to whatever the box holds.
+inline Real squared_distance_to_box(const Vec3& p, const Box3& box) {
+  return (box.min - p).cwiseMax(p - box.max).cwiseMax(Vec3::Zero()).squaredNorm();
 }
 
-/// Contact for p with its memory `m` (updated): a point that cannot have come within tol since
-/// it was last known outside (its bound, less its own motion and the body's) is a miss without a
-/// search; the others search within the distance to their last closest triangle (an exact upper
-/// bound; unbounded the first time), counted in `searches`. Answers are exact: a miss's depth is
-/// a lower bound >= tol.
+/// Contact for p with its memory `*memory` (updated), or from scratch when `memory` is null: a
+/// point that cannot have come within tol since it was last known outside (its bound, less its own
+/// motion and the body's) is a miss without a search; the others search within the distance to
+/// their last closest triangle (an exact upper bound; unbounded the first time), counted in
+/// `searches`. Answers are exact: a miss's depth is a lower bound >= tol.
 template <class Find>
 Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const Box3& box, const Vec3& p,
-                     const ColliderOptions& options, const Find& find, PointMemory& m, double body_moved,
+                     const ColliderOptions& options, const Find& find, PointMemory* memory, double body_moved,
                      std::int64_t& searches) {
+  if (!memory) return answer_point(body, pseudo, box, p, options, find, searches);
+  PointMemory& m = *memory;
   constexpr Real kSlack = 1e-6f;  // float rounding of the stored distances [m]
   Contact miss;
   miss.depth = m.outside - (p - m.at).norm() - Real(body_moved - m.body_moved) - kSlack;
   if (m.outside > 0 && miss.depth >= options.tol) return miss;
   m.at = p;
   m.body_moved = body_moved;
-  miss.depth = m.outside = distance_to_box(p, box);
+  miss.depth = m.outside = std::sqrt(squared_distance_to_box(p, box));
   if (miss.depth >= options.tol) return miss;
   ++searches;
   ClosestPoint seed;

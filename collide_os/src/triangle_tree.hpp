@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "clothbench/sim/mesh_query.hpp"
+#include "object_space.hpp"
 
 namespace clothbench::detail {
 
@@ -46,11 +47,11 @@ class TriangleTree {
     stack[top++] = 0;
     while (top > 0) {
       const Node& n = nodes_[std::size_t(stack[--top])];
-      if (distance2(n.box, p) > reach2) continue;
+      if (squared_distance_to_box(p, n.box) > reach2) continue;
       if (n.leaf) {
         for (int k = 0; k < n.count; ++k) {
           const int t = faces_[std::size_t(n.first + k)];
-          if (distance2(face_box(t), p) <= reach2) face(t);
+          if (squared_distance_to_box(p, face_box(t)) <= reach2) face(t);
         }
         continue;
       }
@@ -58,7 +59,7 @@ class TriangleTree {
       std::pair<Real, int> near[kArity];
       int m = 0;
       for (int k = 0; k < n.count; ++k) {
-        const Real d2 = distance2(nodes_[std::size_t(n.first + k)].box, p);
+        const Real d2 = squared_distance_to_box(p, nodes_[std::size_t(n.first + k)].box);
         if (d2 > reach2) continue;
         int at = m++;  // insertion, farthest first
         for (; nearest_first && at > 0 && near[at - 1].first < d2; --at) near[at] = near[at - 1];
@@ -87,10 +88,6 @@ class TriangleTree {
   Box3 face_box(int t) const {
     return {corner(t, 0).cwiseMin(corner(t, 1)).cwiseMin(corner(t, 2)),
             corner(t, 0).cwiseMax(corner(t, 1)).cwiseMax(corner(t, 2))};
-  }
-
-  static Real distance2(const Box3& b, const Vec3& p) {
-    return (b.min - p).cwiseMax(p - b.max).cwiseMax(Vec3::Zero()).squaredNorm();
   }
 
  private:
