@@ -446,6 +446,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   r.dt_s = sim->dt();
   r.dt_bound_s = sim->stable_dt();
   r.dt_spectral_s = sim->spectral_dt();
+  r.k_structural = sim->stiffness(SpringKind::kStructural);
   // up front: how long it may take
   const std::string label = options.label.empty() ? scene.name + "/" + scene.collider : options.label;
   const Budget budget = iteration_budget(scene, source, *sim);

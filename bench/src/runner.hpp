@@ -39,6 +39,7 @@ struct RunResult {
   int vertices = 0, query_points = 0;
   long body_triangles = 0;
   double dt_s = 0, dt_bound_s = 0, dt_spectral_s = 0;
+  double k_structural = 0;      ///< the structural springs' stiffness as run (the automatic one when 0 was given) [N/m]
   PhaseResult sew, drape, animate;
   long frames = 0;              ///< animation frames (body updates)
   double steps_per_frame = 0;
