@@ -7,13 +7,13 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 PACKAGES := cmake g++ make pkg-config libeigen3-dev libfcl-dev libembree-dev libosmesa6-dev \
             libassimp-dev assimp-testmodels libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
             libtomlplusplus-dev nlohmann-json3-dev libpng-dev python3-matplotlib libboost-dev \
-            libopenvdb-dev libboost-iostreams-dev
+            libopenvdb-dev libboost-iostreams-dev valgrind
 # what only `make reproduce` needs (CI's `make test` stays lean): ffmpeg for the walking video
 REPRODUCE_PACKAGES := ffmpeg
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 CTEST_FLAGS ?= --output-on-failure -LE 'slow|benchmark'
 
-.PHONY: reproduce test test-sanitize fuzz deps configure build quick clean
+.PHONY: reproduce test test-sanitize fuzz deps configure build quick clean perf-baseline
 
 reproduce: build
 	$(MAKE) deps PACKAGES="$(REPRODUCE_PACKAGES)"
@@ -24,6 +24,11 @@ quick: build
 
 test: build
 	cd $(BUILD) && ctest $(CTEST_FLAGS) -j$(JOBS)
+
+# the CI performance gate's baseline: instruction counts of perf/'s workloads under callgrind, rewritten
+# into results/ci-baseline.json (commit it with the change that moved them; perf/README.md)
+perf-baseline: build
+	python3 perf/measure.py --workloads $(BUILD)/bin/clothbench_perf_workloads accept --baseline results/ci-baseline.json
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run (not part of CI: about 3x slower)
 # (libOSMesa's own allocations are suppressed; the reproduce smoke test is too slow under ASan)
