@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Draws one chart from a JSON spec written by clothbench (bench/src/experiment.cpp).
 
-spec: {"out": PNG, "title", "xlabel", "ylabel", "logx", "logy",
+spec: {"out": PNG, "title", "xlabel", "ylabel", "logx", "logy", "xticklabels": [...] (at x = 0, 1, ...),
        "series": [{"label", "x": [...], "y": [...], "style": "o-" | "--" | ...}]}
 """
 import json
@@ -26,6 +26,10 @@ def main(path):
         ax.set_xscale("log")
     if spec.get("logy"):
         ax.set_yscale("log")
+    if spec.get("xticklabels"):
+        labels = spec["xticklabels"]
+        ax.set_xticks(range(len(labels)))
+        ax.set_xticklabels(labels, rotation=45, ha="right", fontsize=7)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()

@@ -1,8 +1,9 @@
-// clothbench compare OLD.json NEW.json [--threshold PCT]: per row, ratio of median times; a
-// Mann-Whitney U test when both sides have >= 3 repetitions (as Google Benchmark's compare.py);
-// exit 1 on a regression beyond the threshold. Rows whose config_hash differs ran different
-// settings: they are shown, flagged and not judged.
-#include <algorithm>
+// clothbench compare OLD.json NEW.json [--threshold PCT]: per benchmark, the Hodges-Lehmann ratio of the
+// new times to the old with its 95 % confidence interval and a one-sided Mann-Whitney U test
+// (timing_stats.hpp). A regression needs at least kMinRepetitions repetitions on both sides (rows with
+// fewer get no verdict, said so), p < 0.05 and a ratio beyond the threshold. Times are read in each row's
+// time_unit. Rows whose config_hash differs ran different settings: shown, flagged and not judged; rows
+// on one side only are listed. Exit 1 on a regression, 2 when no row could be judged.
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -12,95 +13,129 @@
 
 #include "clothbench/io/errors.hpp"
 #include "commands.hpp"
+#include "timing_stats.hpp"
 
 namespace clothbench::cli {
 
 namespace {
 
-using Samples = std::map<std::string, std::vector<double>>;
-using Hashes = std::map<std::string, std::set<std::string>>;
+struct Benchmark {
+  std::vector<double> ns;          // real_time of every iteration row (one per repetition) [ns]
+  std::set<std::string> hashes;    // config_hash where the rows have one
+  std::string unit = "ms";         // the rows' time_unit, for printing
+};
+using Benchmarks = std::map<std::string, Benchmark>;
 
-// real_time of every iteration row by name (repetitions give several samples), and the rows'
-// config_hash where they have one
-Samples read_samples(const std::string& path, Hashes& hashes) {
+double ns_per(const std::string& unit, const std::string& path) {
+  if (unit == "ns") return 1;
+  if (unit == "us") return 1e3;
+  if (unit == "ms") return 1e6;
+  if (unit == "s") return 1e9;
+  throw InputError(path + ": unknown time_unit '" + unit + "' (ns, us, ms, s)");
+}
+
+nlohmann::json parse(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open");
-  nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(in);
+    return nlohmann::json::parse(in);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path + ": not JSON: " + e.what());
   }
+}
+
+// the iteration rows (aggregates are recomputed from them), by name
+Benchmarks read_benchmarks(const std::string& path) {
+  const nlohmann::json doc = parse(path);
   if (!doc.contains("benchmarks") || !doc["benchmarks"].is_array())
     throw InputError(path + ": no \"benchmarks\" array (expected Google Benchmark's layout)");
-  Samples s;
+  Benchmarks s;
   for (const auto& row : doc["benchmarks"]) {
     if (row.value("run_type", "iteration") != "iteration") continue;
-    if (!row.contains("name") || !row.contains("real_time") || !row["real_time"].is_number())
+    if (!row.contains("name") || !row["name"].is_string() || !row.contains("real_time") ||
+        !row["real_time"].is_number())
       throw InputError(path + ": a row lacks name or numeric real_time");
-    const std::string name = row["name"].get<std::string>();
-    s[name].push_back(row["real_time"].get<double>());
-    if (row.contains("config_hash") && row["config_hash"].is_string())
-      hashes[name].insert(row["config_hash"].get<std::string>());
+    const std::string name = row.contains("run_name") && row["run_name"].is_string()
+                                 ? row["run_name"].get<std::string>()
+                                 : row["name"].get<std::string>();
+    Benchmark& b = s[name];
+    b.unit = row.value("time_unit", std::string("ms"));
+    b.ns.push_back(row["real_time"].get<double>() * ns_per(b.unit, path));
+    if (row.contains("config_hash") && row["config_hash"].is_string()) b.hashes.insert(row["config_hash"].get<std::string>());
   }
   return s;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
 }
 
-// two-sided Mann-Whitney U test, normal approximation with tie-free variance
-double mann_whitney_p(const std::vector<double>& a, const std::vector<double>& b) {
-  double u = 0;
-  for (double x : a)
-    for (double y : b) u += x > y ? 1 : x == y ? 0.5 : 0;
-  const double n1 = double(a.size()), n2 = double(b.size());
-  const double mean = n1 * n2 / 2, sd = std::sqrt(n1 * n2 * (n1 + n2 + 1) / 12);
-  const double z = (std::abs(u - mean) - 0.5) / sd;
-  return std::erfc(std::max(0.0, z) / std::sqrt(2.0));
+// "12.345 ms" in the old rows' unit
+std::string time_in(double ns, const std::string& unit) { return fixed(ns / ns_per(unit, ""), 4) + " " + unit; }
+
+void print_row(const std::string& name, const std::string& old_t, const std::string& new_t, const std::string& ratio,
+               const std::string& p, const std::string& verdict) {
+  std::printf("%-48s %14s %14s %24s %8s  %s\n", name.c_str(), old_t.c_str(), new_t.c_str(), ratio.c_str(), p.c_str(),
+              verdict.c_str());
 }
 
-// both sides record the row's configuration and the hashes differ
-bool config_differs(const Hashes& before, const Hashes& after, const std::string& name) {
-  const auto a = before.find(name), b = after.find(name);
-  return a != before.end() && b != after.end() && a->second != b->second;
+struct Tally {
+  int regressions = 0, judged = 0, unjudged = 0, changed = 0, one_side = 0;
+};
+
+void compare_one(const std::string& name, const Benchmark& o, const Benchmark& n, double threshold, Tally& tally) {
+  const std::string before = time_in(median(o.ns), o.unit), after = time_in(median(n.ns), o.unit);
+  const TimingComparison c = compare_timings(o.ns, n.ns, threshold);
+  const std::string ratio = fixed(c.ratio, 3) + " [" + fixed(c.ratio_lo, 3) + ", " + fixed(c.ratio_hi, 3) + "]";
+  if (!o.hashes.empty() && !n.hashes.empty() && o.hashes != n.hashes) {
+    ++tally.changed;
+    print_row(name, before, after, ratio, "-", "CONFIG DIFFERS (not judged)");
+    return;
+  }
+  if (!c.judged) {
+    ++tally.unjudged;
+    print_row(name, before, after, ratio, "-",
+              "no verdict: " + std::to_string(c.n_old) + " vs " + std::to_string(c.n_new) + " repetitions (need >= " +
+                  std::to_string(kMinRepetitions) + " on both sides)");
+    return;
+  }
+  ++tally.judged;
+  tally.regressions += c.regression;
+  print_row(name, before, after, ratio, fixed(c.p_slower, 4), c.regression ? "REGRESSION" : "ok");
 }
 
 int compare(const std::string& old_path, const std::string& new_path, double threshold_pct) {
-  Hashes old_hashes, new_hashes;
-  const Samples before = read_samples(old_path, old_hashes), after = read_samples(new_path, new_hashes);
-  int regressions = 0, changed = 0;
-  std::printf("%-44s %12s %12s %8s %8s  %s\n", "name", "old [ms]", "new [ms]", "ratio", "p", "verdict");
-  for (const auto& [name, old_t] : before) {
+  const Benchmarks before = read_benchmarks(old_path), after = read_benchmarks(new_path);
+  Tally tally;
+  print_row("name", "old (median)", "new (median)", "new/old [95 % CI]", "p", "verdict");
+  for (const auto& [name, o] : before) {
     const auto it = after.find(name);
     if (it == after.end()) {
-      std::printf("%-44s %12.4f %12s %8s %8s  missing in new\n", name.c_str(), median(old_t), "-", "-", "-");
-      continue;
+      ++tally.one_side;
+      print_row(name, time_in(median(o.ns), o.unit), "-", "-", "-", "only in old");
+    } else {
+      compare_one(name, o, it->second, threshold_pct / 100, tally);
     }
-    const double ratio = median(it->second) / median(old_t);
-    if (config_differs(old_hashes, new_hashes, name)) {
-      ++changed;
-      std::printf("%-44s %12.4f %12.4f %8.3f %8s  CONFIG DIFFERS (not judged)\n", name.c_str(), median(old_t),
-                  median(it->second), ratio, "-");
-      continue;
-    }
-    const bool tested = old_t.size() >= 3 && it->second.size() >= 3;
-    const double p = tested ? mann_whitney_p(old_t, it->second) : NAN;
-    const bool slower = ratio > 1 + threshold_pct / 100 && (!tested || p < 0.05);
-    regressions += slower;
-    std::printf("%-44s %12.4f %12.4f %8.3f %8s  %s\n", name.c_str(), median(old_t), median(it->second), ratio,
-                tested ? std::to_string(p).substr(0, 6).c_str() : "-", slower ? "REGRESSION" : "ok");
   }
-  std::printf("%d regression(s) beyond %.1f %% (p < 0.05 where both sides have >= 3 repetitions)\n", regressions, threshold_pct);
-  if (changed)
+  for (const auto& [name, n] : after)
+    if (!before.count(name)) ++tally.one_side, print_row(name, "-", time_in(median(n.ns), n.unit), "-", "-", "only in new");
+  std::printf("%d regression(s) among %d judged row(s): slower by more than %.1f %% with p < 0.05 (one-sided "
+              "Mann-Whitney U); %d row(s) without a verdict, %d with another configuration, %d on one side only\n",
+              tally.regressions, tally.judged, threshold_pct, tally.unjudged, tally.changed, tally.one_side);
+  if (tally.changed)
     std::fprintf(stderr,
                  "clothbench compare: warning: %d row(s) ran with a different configuration (config_hash differs: "
                  "other scene settings or --set overrides); their times are not comparable and were not judged\n",
-                 changed);
-  return regressions ? 1 : 0;
+                 tally.changed);
+  if (tally.regressions) return 1;
+  if (tally.judged == 0) {
+    std::fprintf(stderr, "clothbench compare: no row could be judged: run both sides with --repetitions %d or more\n",
+                 kMinRepetitions);
+    return 2;
+  }
+  return 0;
 }
 
 }  // namespace
@@ -108,7 +143,9 @@ int compare(const std::string& old_path, const std::string& new_path, double thr
 void add_compare_command(CLI::App& app, Action& action) {
   auto paths = std::make_shared<std::vector<std::string>>();
   auto threshold = std::make_shared<double>(10.0);
-  auto* cmd = app.add_subcommand("compare", "Compare two result JSON files; exit 1 on a regression");
+  auto* cmd = app.add_subcommand(
+      "compare", "Compare two result JSON files (>= " + std::to_string(kMinRepetitions) +
+                     " repetitions per row for a verdict); exit 1 on a regression, 2 when nothing could be judged");
   cmd->add_option("files", *paths, "OLD.json NEW.json")->required()->expected(2);
   cmd->add_option("--threshold", *threshold, "slow-down that counts as a regression [%]")->check(CLI::Range(0.0, 1e6));
   cmd->callback([&action, paths, threshold] {

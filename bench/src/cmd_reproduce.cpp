@@ -9,6 +9,7 @@
 #include "clothbench/sim/timer.hpp"
 #include "commands.hpp"
 #include "experiment.hpp"
+#include "history.hpp"
 #include "report.hpp"
 
 namespace clothbench::cli {
@@ -22,8 +23,39 @@ struct ReproduceArgs {
   int repetitions = 1;
 };
 
+// results/README.md's last section: each experiment's run against its previous one in history.jsonl, and
+// its trend chart history-ID.png
+std::string since_previous(ExperimentContext& ctx, const std::vector<std::pair<std::string, double>>& done) {
+  const std::vector<nlohmann::json> history = read_history(ctx.path("history.jsonl"));
+  MarkdownTable t({"ID", "previous run", "time per iteration, this / previous (geometric mean; range)",
+                   "configurations compared", "verdicts changed", "added / removed", "trend"});
+  for (const auto& [id, seconds] : done) {
+    const std::vector<nlohmann::json> entries = entries_of(history, id, ctx.quick());
+    if (entries.empty()) continue;
+    const std::string chart = "history-" + id;
+    const std::string trend = ctx.chart(chart, trend_chart(entries, id)) ? "[" + chart + ".png](" + chart + ".png)" : "-";
+    if (entries.size() < 2) {
+      t.row({id, "none (first run in the history)", "-", "-", "-", "-", trend});
+      continue;
+    }
+    const nlohmann::json& before = entries[entries.size() - 2];
+    const HistoryChange c = compare_entries(before, entries.back());
+    t.row({id, before.value("git_sha", "?") + ", " + before.value("date", "?"),
+           c.common ? num(c.time_ratio, 3) + " (" + num(c.ratio_min, 2) + "-" + num(c.ratio_max, 2) + ")" : "-",
+           std::to_string(c.common), std::to_string(c.verdict_changed),
+           std::to_string(c.added) + " / " + std::to_string(c.removed), trend});
+  }
+  return "## Since the previous run\n\nEvery `reproduce` appends each experiment's key figures (per configuration: time "
+         "per iteration, CD&R, CS, accuracy, verdict) with the git SHA and date to `history.jsonl`. Below, this run "
+         "against the previous run of the same experiment (quick runs only against quick runs); wall times on this shared machine "
+         "drift by about ±20 % between runs, so only changes well beyond that, or changed verdicts, mean something "
+         "(`clothbench compare` with repetitions is the statistical gate).\n\n" +
+         t.str();
+}
+
 // results/README.md: the index of every experiment and the machine
-void write_index(const std::string& out, const std::vector<std::pair<std::string, double>>& done, bool quick) {
+void write_index(ExperimentContext& ctx, const std::string& out, const std::vector<std::pair<std::string, double>>& done,
+                 bool quick) {
   const nlohmann::json c = machine_context();
   std::ostringstream md;
   md << "# clothbench results\n\nWritten by `clothbench reproduce" << (quick ? " --quick" : "")
@@ -41,7 +73,8 @@ void write_index(const std::string& out, const std::vector<std::pair<std::string
     t.row({id, title, "[" + id + ".md](" + id + ".md)", "[" + id + ".json](" + id + ".json)", num(seconds, 1)});
   }
   md << t.str() << "\nCharts are `ID.png`; pictures of dressed bodies are under `pictures/`; maps under `maps/`; "
-     << "garment meshes under `garments/`.\n";
+     << "garment meshes under `garments/`.\n\n"
+     << since_previous(ctx, done);
   write_text_file(out + "/README.md", md.str());
 }
 
@@ -81,7 +114,7 @@ int reproduce(const ReproduceArgs& a) {
     done.emplace_back(e.id, clock.ms() / 1e3);
     std::cerr << "[" << e.id << "] done in " << num(clock.ms() / 1e3, 1) << " s\n";
   }
-  if (wanted.empty()) write_index(a.out, done, a.quick);
+  if (wanted.empty()) write_index(ctx, a.out, done, a.quick);
   return 0;
 }
 
@@ -94,7 +127,7 @@ void add_reproduce_command(CLI::App& app, Action& action) {
   cmd->footer(experiment_list);
   cmd->add_option("--out", args->out, "output folder")->capture_default_str();
   cmd->add_flag("--quick", args->quick, "fewer iterations and sizes, same code paths (smoke test)");
-  cmd->add_option("--repetitions", args->repetitions, "runs per configuration (median reported)")->check(CLI::Range(1, 100));
+  cmd->add_option("--repetitions", args->repetitions, "runs per configuration: tables show the median run; the JSON has every run's row and the aggregates (mean, median, stddev, cv)")->check(CLI::Range(1, 100));
   cmd->callback([&action, args] { action = [args] { return reproduce(*args); }; });
 }
 

@@ -1,5 +1,6 @@
 // clothbench run SCENE [--collider NAME] [--set key=value]... [--json FILE] [--png FILE] [--strict] [--estimate]
-//                 [--every-frame]
+//                 [--every-frame] [--repetitions N]
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -8,6 +9,7 @@
 #include "picture.hpp"
 #include "report.hpp"
 #include "runner.hpp"
+#include "timing_stats.hpp"
 
 namespace clothbench::cli {
 
@@ -17,6 +19,7 @@ struct RunArgs {
   std::string scene, collider, json, png, gltf;
   std::vector<std::string> sets;
   bool quiet = false, strict = false, estimate = false, every_frame = false;
+  int repetitions = 1;
 };
 
 // the scene as run: its file, the --set overrides and the hash of the effective configuration
@@ -37,15 +40,29 @@ void print_verdict(const RunResult& r) {
       misses.empty() ? ("meets the limits (" + limits_text(r) + ")").c_str() : ("MISSES the limits: " + text).c_str());
 }
 
-// the run's JSON: context with the scene, its overrides and config hash; the row with the verdict
-nlohmann::json run_document(const RunArgs& a, const Scene& scene, const RunResult& r) {
-  nlohmann::json row = result_row(r, scene.name + "/" + scene.collider);
-  row["limit_misses"] = limit_misses(r);
-  nlohmann::json doc = result_document(nlohmann::json::array({row}));
+// the runs' JSON: context with the scene, its overrides and config hash; a row per repetition with the verdict
+// (and their aggregates when there are several)
+nlohmann::json run_document(const RunArgs& a, const Scene& scene, const std::vector<RunResult>& runs) {
+  std::vector<nlohmann::json> rows;
+  for (const RunResult& r : runs) {
+    rows.push_back(result_row(r, scene.name + "/" + scene.collider));
+    rows.back()["limit_misses"] = limit_misses(r);
+  }
+  nlohmann::json doc = result_document(repetition_rows(rows));
   doc["context"]["scene"] = a.scene;
   doc["context"]["overrides"] = a.sets;
-  doc["context"]["config_hash"] = r.config_hash;
+  doc["context"]["config_hash"] = runs.front().config_hash;
   return doc;
+}
+
+// the repetitions' spread of the time per iteration (the summary is the median run's)
+void print_spread(const std::vector<RunResult>& runs) {
+  if (runs.size() < 2) return;
+  std::vector<double> t;
+  for (const RunResult& r : runs) t.push_back(r.ms_per_iteration());
+  std::printf("  %zu repetitions: per iteration median %.4f ms, mean %.4f, stddev %.4f (cv %.1f %%), min %.4f, max %.4f\n",
+              runs.size(), median(t), mean(t), stddev(t), 100 * stddev(t) / mean(t), *std::min_element(t.begin(), t.end()),
+              *std::max_element(t.begin(), t.end()));
 }
 
 void print_summary(const RunArgs& a, const RunResult& r) {
@@ -63,8 +80,8 @@ void print_summary(const RunArgs& a, const RunResult& r) {
   phase("sew", r.sew, "sewn");
   phase("drape", r.drape, "settled");
   if (r.frames > 0) phase("animate", r.animate, "clip done");
-  std::printf("  per iteration %.3f ms (CD&R %.3f, CS %.3f)\n", r.ms_per_iteration(), r.cdr_ms_per_iteration(),
-              r.cs_ms_per_iteration());
+  std::printf("  per iteration %.3f ms (CD&R %.3f, CS %.3f of which velocity limits %.3f)\n", r.ms_per_iteration(),
+              r.cdr_ms_per_iteration(), r.cs_ms_per_iteration(), r.limit_ms_per_iteration());
   if (r.frames > 0)
     std::printf(
         "  %ld frames, %.0f steps per frame, %.2f frames/s (skinning %.2f ms, collider update %.2f ms per frame)\n",
@@ -98,10 +115,21 @@ int run(const RunArgs& a) {
   options.progress = !a.quiet;
   options.estimate_only = a.estimate;
   options.measure_frames = a.every_frame;
-  const RunResult r = run_scene(scene, options);
+  std::vector<RunResult> runs;
+  for (int i = 0; i < (a.estimate ? 1 : a.repetitions); ++i) {
+    if (a.repetitions > 1 && !a.quiet) std::cerr << "repetition " << i + 1 << " of " << a.repetitions << "\n";
+    runs.push_back(run_scene(scene, options));
+  }
   if (a.estimate) return 0;
+  // the median run by time per iteration (the simulation is deterministic: only the times differ)
+  std::vector<const RunResult*> by_time;
+  for (const RunResult& r : runs) by_time.push_back(&r);
+  std::sort(by_time.begin(), by_time.end(),
+            [](auto* x, auto* y) { return x->ms_per_iteration() < y->ms_per_iteration(); });
+  const RunResult& r = *by_time[(by_time.size() - 1) / 2];
   print_summary(a, r);
-  if (!a.json.empty()) write_text_file(a.json, run_document(a, scene, r).dump(2) + "\n");
+  print_spread(runs);
+  if (!a.json.empty()) write_text_file(a.json, run_document(a, scene, runs).dump(2) + "\n");
   if (!a.png.empty()) {
     std::vector<Image> views;
     for (View v : {View::kFront, View::kSide, View::kBack})
@@ -132,6 +160,10 @@ void add_run_command(CLI::App& app, Action& action) {
   cmd->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   cmd->add_flag("--strict", args->strict, "exit 4 when the run misses the accuracy limits");
   cmd->add_flag("--estimate", args->estimate, "print how long the run may take and stop (nothing simulated)");
+  cmd->add_option("--repetitions", args->repetitions,
+                  "run N times: the summary is the median run's; --json writes every run and the aggregates "
+                  "(mean, median, stddev, cv) in Google Benchmark's layout")
+      ->check(CLI::Range(1, 1000));
   cmd->add_flag("--every-frame", args->every_frame,
                 "moving bodies: measure accuracy at every animation frame; the verdict counts the worst");
   cmd->callback([&action, args] { action = [args] { return run(*args); }; });

@@ -31,7 +31,12 @@ std::map<std::string, nlohmann::json> rows_of(ExperimentContext& ctx, const std:
   if (!in) return rows;
   const auto doc = nlohmann::json::parse(in, nullptr, false);
   if (doc.is_discarded() || !doc.contains("benchmarks")) return rows;
-  for (const auto& r : doc["benchmarks"]) rows[r.value("name", "")] = r;
+  // one row per configuration: a run's row, or with repetitions their median aggregate
+  for (const auto& r : doc["benchmarks"]) {
+    const bool aggregate = r.value("run_type", "iteration") == "aggregate";
+    if (aggregate && r.value("aggregate_name", "") == "median") rows[r.value("run_name", "")] = r;
+    if (!aggregate) rows.emplace(r.value("name", ""), r);
+  }
   return rows;
 }
 
@@ -152,7 +157,7 @@ Claim linear_claim(ExperimentContext& ctx) {
   for (const auto& [name, r] : rows) {
     auto& [x, y] = xy[name.substr(name.rfind('/') + 1)];
     x.push_back(r["vertices"].get<double>());
-    y.push_back(r["real_time"].get<double>());
+    y.push_back(row_time_ms(r, "real_time"));
   }
   double min_r2 = 1;
   for (const auto& [collider, pts] : xy) {

@@ -96,7 +96,7 @@ void dressing_t1(ExperimentContext& ctx) {
              num(r.ms_per_iteration(), 3), num(r.cdr_ms_per_iteration(), 3), p.method, std::to_string(p.iterations),
              num(p.total_s, 1), num(p.ms_per_iteration, 1), num(r.ms_per_iteration() / p.ms_per_iteration, 3),
              accuracy_cells(r), r.converged ? "yes" : "no", limits_cell(r)});
-      ctx.add_row(result_row(r, std::string("dressing-t1/") + g.product + "/" + c + regime_suffix(regime, "/")));
+      ctx.add_run(r, std::string("dressing-t1/") + g.product + "/" + c + regime_suffix(regime, "/"));
       if (c == "is-cpu") pictures.push_back(regime_picture(ctx, r, "dressing-t1", g.product, regime));
       if (c == "is-cpu" && regime == "stable" && g.product == std::string("dress")) {
         export_dressed(ctx.path("pictures/dressing-t1-dress.glb"), r.final_body, r.mesh);
@@ -138,7 +138,7 @@ void walking_t1(ExperimentContext& ctx) {
              num(100 * r.cs_ms_per_iteration() / total, 1), p.method, num(p.ms_per_iteration, 1), num(p.cdr_ms, 1),
              num(p.cs_ms, 1), num(p.cdr_pct, 1), num(p.cs_pct, 1),
              r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2)});
-      ctx.add_row(result_row(r, std::string("walking-t1/") + g.product + "/" + c));
+      ctx.add_run(r, std::string("walking-t1/") + g.product + "/" + c);
     }
   ctx.write("walking-t1", "Walking paper Table 1: CD&R vs CS time",
             "The runs of dressing-t1 (static body), split into collision detection and response (CD&R: collider "
@@ -175,7 +175,7 @@ void dressing_t2(ExperimentContext& ctx) {
              num(r.total_s(), 2), num(r.ms_per_iteration(), 3), std::to_string(p.vertices),
              std::to_string(p.iterations), num(p.total_s, 3), num(p.ms_per_iteration, 1), accuracy_cells(r),
              r.converged ? "yes" : "no", limits_cell(r)});
-      ctx.add_row(result_row(r, std::string("dressing-t2/") + g.product + "/" + c + regime_suffix(regime, "/")));
+      ctx.add_run(r, std::string("dressing-t2/") + g.product + "/" + c + regime_suffix(regime, "/"));
       if (c == "is-cpu") pictures.push_back(regime_picture(ctx, r, "dressing-t2", g.product, regime));
     }
   }
@@ -206,7 +206,7 @@ void dressing_f8(ExperimentContext& ctx) {
       y.push_back(r.ms_per_iteration());
       t.row({c, std::to_string(r.vertices), num(r.ms_per_iteration(), 3), num(r.cdr_ms_per_iteration(), 3),
              num(r.cs_ms_per_iteration(), 3), r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2)});
-      ctx.add_row(result_row(r, "dressing-f8/dress-" + std::to_string(n) + "/" + c));
+      ctx.add_run(r, "dressing-f8/dress-" + std::to_string(n) + "/" + c);
     }
     double a = 0, b = 0, r2 = 0;
     linear_fit(x, y, a, b, r2);

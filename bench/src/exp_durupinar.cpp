@@ -38,7 +38,7 @@ void durupinar_f6(ExperimentContext& ctx) {
            std::to_string(r.sew.iterations), num(r.sew.wall_ms / 1e3, 3), num(first, 3), num(last, 3),
            r.sew.reached ? "yes" : "no", num(r.seam_gap_max_mm, 1), std::to_string(p.vertices), std::to_string(p.seams),
            num(p.total_sewing_s, 3)});
-    ctx.add_row(result_row(r, std::string("durupinar-f6/") + g.product + "/" + r.collider));
+    ctx.add_run(r, std::string("durupinar-f6/") + g.product + "/" + r.collider);
     // the series, thinned to at most 400 points (mean of each bucket)
     std::vector<double> x, y;
     const std::size_t bucket = std::max<std::size_t>(1, ms.size() / 400);

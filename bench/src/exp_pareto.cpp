@@ -90,7 +90,7 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g) {
   for (const auto& c : configs)
     for (int n : g.sizes) {
       const RunResult& r = ctx.run(g.scene, c.collider, sets_for(ctx, n, c.sets));
-      ctx.add_row(result_row(r, std::string("pareto/") + g.name + "/" + c.label + "/" + std::to_string(n)));
+      ctx.add_run(r, std::string("pareto/") + g.name + "/" + c.label + "/" + std::to_string(n));
       Point p;
       p.label = c.label;
       p.vertices = r.vertices;
@@ -193,10 +193,8 @@ void minimal(ExperimentContext& ctx) {
         const RunResult& r =
             ctx.run(l.scene, s.collider,
                     sets_for(ctx, n, {s.faces ? "solver.face_queries=true" : "solver.face_queries=false"}));
-        nlohmann::json row = result_row(
-            r, std::string("minimal/") + l.name + "/" + s.collider + (s.faces ? "+faces/" : "/") + std::to_string(n));
-        row["meets_limits"] = meets(r) ? 1 : 0;
-        ctx.add_row(row);
+        ctx.add_run(r, std::string("minimal/") + l.name + "/" + s.collider + (s.faces ? "+faces/" : "/") + std::to_string(n),
+                    {{"meets_limits", meets(r) ? 1 : 0}});
         if (!meets(r)) continue;
         found = std::to_string(r.vertices);
         inside = num(r.accuracy.inside_pct, 2);

@@ -50,7 +50,7 @@ std::string dt_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
       sets.insert(sets.end(), {std::string("solver.limit=") + limit, "solver.allow_unstable_dt=true",
                                "solver.dt=" + std::to_string(m * bound)});
       const RunResult& r = ctx.run(kTablecloth, "sphere", sets);
-      ctx.add_row(result_row(r, std::string("stability/dt/") + limit + "/" + num(m, 2)));
+      ctx.add_run(r, std::string("stability/dt/") + limit + "/" + num(m, 2));
       const std::string v = verdict(r, 0.5);
       if (v == "ok" && failure == "none up to 3x") stable = m;
       if (v != "ok" && failure == "none up to 3x") failure = num(m, 2) + "x: " + v;
@@ -86,7 +86,7 @@ std::string speed_boundaries(ExperimentContext& ctx) {
       const std::vector<std::string> sets{"garment.vertices=400", "solver.limit=velocity", "body.move_s=0.4",
                                           "stop.drape_max_s=0.6", "body.velocity=[" + std::to_string(speeds[i]) + ", 0, 0]"};
       const RunResult& r = ctx.run(kTablecloth, c, sets, per_frame);
-      ctx.add_row(result_row(r, "stability/speed/" + c + "/" + num(speeds[i], 1)));
+      ctx.add_run(r, "stability/speed/" + c + "/" + num(speeds[i], 1));
       if (c == "sphere") reference.push_back(r.animate_inside_max_pct);
       if (c == "sphere") reference_crossings.push_back(r.animate_crossings_max_pct);
       const bool sinks = r.animate_inside_max_pct > reference[i] + kInsideLimitPct;

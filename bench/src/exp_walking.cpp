@@ -129,8 +129,8 @@ void walking_t2(ExperimentContext& ctx) {
              r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2) + " / " + num(r.animate_inside_max_pct, 2),
              r.divergence ? "-" : num(r.animate_depth_max_mm, 1), r.divergence ? "-" : num(r.animate_crossings_max_pct, 2),
              num(100 * r.animate_strain_max, 1), limits_cell(r)});
-      ctx.add_row(result_row(r, std::string("walking-t2/") + (i ? "dress_sleeves" : "skirt") + "/" + c +
-                                    variant.row_suffix));
+      ctx.add_run(r, std::string("walking-t2/") + (i ? "dress_sleeves" : "skirt") + "/" + c +
+                                    variant.row_suffix);
       if (pictures) {
         write_sequence(sequence, r, ctx.path(stem + "/" + stem.substr(9)));
         const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"),
@@ -187,10 +187,10 @@ void walking_f8(ExperimentContext& ctx) {
     t.row({limit, "5 %", r.frames ? num(100 * r.animate_strain_max, 1) : "-", end_value(r.strain_max),
            end_value(r.strain_p99), r.divergence ? "-" : num(100 * lag(r, Vec3::UnitX()), 1),
            r.divergence ? "-" : num(r.accuracy.inside_pct, 2), status});
-    nlohmann::json row = result_row(r, std::string("walking-f8/tablecloth/") + limit);
-    if (r.frames) row["animate_strain_max"] = r.animate_strain_max;
-    if (!r.divergence) row["lag_cm"] = 100 * lag(r, Vec3::UnitX());
-    ctx.add_row(row);
+    nlohmann::json extra = nlohmann::json::object();
+    if (r.frames) extra["animate_strain_max"] = r.animate_strain_max;
+    if (!r.divergence) extra["lag_cm"] = 100 * lag(r, Vec3::UnitX());
+    ctx.add_run(r, std::string("walking-f8/tablecloth/") + limit, extra);
     pictures.push_back(render_dressed(r.final_body, r.mesh, 300, View::kFront));
   }
   side_by_side(pictures).write_png(ctx.path("pictures/walking-f8.png"));

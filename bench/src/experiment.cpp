@@ -10,6 +10,7 @@
 
 #include "clothbench/config.h"
 #include "clothbench/io/errors.hpp"
+#include "history.hpp"
 #include "registry.hpp"
 #include "report.hpp"
 
@@ -71,6 +72,17 @@ const RunResult& ExperimentContext::run(const std::string& scene, const std::str
   return *sorted[sorted.size() / 2];
 }
 
+void ExperimentContext::add_run(const RunResult& r, const std::string& name, const nlohmann::json& extra) {
+  std::vector<nlohmann::json> rows;
+  for (const auto& [key, runs] : cache_)
+    for (const RunResult& rep : runs)
+      if (&rep == &r)
+        for (const RunResult& each : runs) rows.push_back(result_row(each, name));
+  if (rows.empty()) rows.push_back(result_row(r, name));  // not one of run()'s
+  for (auto& row : rows) row.update(extra);
+  for (auto& row : repetition_rows(rows)) rows_.push_back(std::move(row));
+}
+
 std::vector<std::string> ExperimentContext::colliders(const std::vector<std::string>& wanted) const {
   const auto built = available_colliders();
   std::vector<std::string> out;
@@ -113,6 +125,7 @@ void ExperimentContext::write(const std::string& id, const std::string& title, c
      << body;
   write_text_file(path(id + ".md"), md.str());
   write_text_file(path(id + ".json"), result_document(rows_).dump(2) + "\n");
+  if (!rows_.empty()) append_history(path("history.jsonl"), history_entry(id, rows_, context, quick_));
   rows_ = nlohmann::json::array();
 }
 

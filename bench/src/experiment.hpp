@@ -40,14 +40,17 @@ class ExperimentContext {
 
   /// Runs scenes/SCENE (relative to the source tree's scenes/) with a collider and overrides;
   /// identical requests in one `reproduce` share one run. With repetitions > 1 the run is
-  /// repeated and the repetition with the median time per iteration is returned; every
-  /// repetition becomes a JSON row of the experiment that asked.
+  /// repeated and the repetition with the median time per iteration is returned; add_run() writes
+  /// every repetition's row and the aggregates.
   const RunResult& run(const std::string& scene, const std::string& collider, const std::vector<std::string>& sets = {},
                        const RunOptions& options = {});
   /// Colliders of `wanted` that this build has (the others are reported as not built).
   std::vector<std::string> colliders(const std::vector<std::string>& wanted) const;
-  /// Adds a JSON row for the current experiment.
+  /// Adds a JSON row for the current experiment (measurements not made by run()).
   void add_row(nlohmann::json row) { rows_.push_back(std::move(row)); }
+  /// Adds the rows of a run() result named `name`, `extra` fields merged into each: with repetitions,
+  /// one row per repetition and their aggregates (repetition_rows), else result_row(r, name).
+  void add_run(const RunResult& r, const std::string& name, const nlohmann::json& extra = nlohmann::json::object());
   /// Writes OUT/ID.md (title, definitions, machine, `body`) and OUT/ID.json (rows so far).
   void write(const std::string& id, const std::string& title, const std::string& body);
   /// Renders a chart through bench/plot/plot.py (matplotlib) into OUT/NAME.png; `spec` holds

@@ -1,7 +1,9 @@
 // Result rows, machine context and atomic writes.
 #include "report.hpp"
+#include "timing_stats.hpp"
 
 #include <unistd.h>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -126,13 +128,20 @@ nlohmann::json machine_context() {
           {"threads", 1}};
 }
 
+void set_times(nlohmann::json& row, double real_ms, double cpu_ms, std::string unit) {
+  // the unit that keeps the real time at 1 or more (Google Benchmark: one unit per benchmark)
+  const double a = std::abs(real_ms);
+  if (unit.empty()) unit = a >= 1 || a == 0 ? "ms" : a >= 1e-3 ? "us" : "ns";
+  const double per_ms = unit == "ns" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e-3 : 1;
+  row["real_time"] = real_ms * per_ms;
+  row["cpu_time"] = cpu_ms * per_ms;
+  row["time_unit"] = unit;
+}
+
 nlohmann::json result_row(const RunResult& r, const std::string& name) {
   nlohmann::json row{{"name", name},
                      {"run_type", "iteration"},
                      {"iterations", r.iterations()},
-                     {"real_time", r.ms_per_iteration()},
-                     {"cpu_time", r.ms_per_iteration()},
-                     {"time_unit", "ms"},
                      {"vertices", r.vertices},
                      {"query_points", r.query_points},
                      {"body_triangles", r.body_triangles},
@@ -140,6 +149,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"setup_ms", r.setup_ms},
                      {"cdr_ms", r.cdr_ms_per_iteration()},
                      {"cs_ms", r.cs_ms_per_iteration()},
+                     {"limit_ms", r.limit_ms_per_iteration()},
                      {"integrator", r.integrator},
                      {"regime", r.regime},
                      {"dt_ms", 1e3 * r.dt_s},
@@ -152,6 +162,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"converged", r.converged ? 1 : 0},
                      {"diverged", r.divergence ? 1 : 0},
                      {"meets_limits", limit_misses(r).empty() ? 1 : 0}};
+  set_times(row, r.ms_per_iteration(), r.cpu_ms_per_iteration());
   if (!r.config_hash.empty()) row["config_hash"] = r.config_hash;
   if (r.search_share > 0) row["search_share"] = r.search_share;
   if (r.frames > 0) {
@@ -184,6 +195,69 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
   row["strain_max_where"] = r.strain_max_where;
   row["kinetic_energy_j"] = r.kinetic_energy;
   return row;
+}
+
+double row_time_ms(const nlohmann::json& row, const char* key) {
+  const std::string unit = row.value("time_unit", std::string("ms"));
+  const double per_ms = unit == "ns" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e-3 : 1;
+  return row.at(key).get<double>() / per_ms;
+}
+
+namespace {
+
+// an aggregate row of Google Benchmark's repetitions: name_AGG, run_type aggregate
+nlohmann::json aggregate_row(const nlohmann::json& first, const std::string& aggregate, double real_ms, double cpu_ms,
+                             std::size_t n) {
+  nlohmann::json row = first;
+  row.erase("repetition_index");
+  row["name"] = first["run_name"].get<std::string>() + "_" + aggregate;
+  row["run_type"] = "aggregate";
+  row["aggregate_name"] = aggregate;
+  row["iterations"] = n;
+  if (aggregate == "cv") {
+    // Google Benchmark writes the coefficient of variation as a fraction, aggregate_unit "percentage"
+    row["aggregate_unit"] = "percentage";
+    row["real_time"] = real_ms;
+    row["cpu_time"] = cpu_ms;
+    return row;
+  }
+  row["aggregate_unit"] = "time";
+  set_times(row, real_ms, cpu_ms, first["time_unit"].get<std::string>());
+  return row;
+}
+
+}  // namespace
+
+nlohmann::json repetition_rows(const std::vector<nlohmann::json>& runs) {
+  nlohmann::json out = nlohmann::json::array();
+  if (runs.size() < 2) {
+    for (const auto& r : runs) out.push_back(r);
+    return out;
+  }
+  std::vector<double> real, cpu;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    nlohmann::json row = runs[i];
+    row["run_name"] = runs[0]["name"];
+    row["name"] = runs[0]["name"];
+    row["repetitions"] = runs.size();
+    row["repetition_index"] = i;
+    real.push_back(row_time_ms(row, "real_time"));
+    cpu.push_back(row_time_ms(row, "cpu_time"));
+    out.push_back(std::move(row));
+  }
+  // the aggregates carry the other fields of the run with the median real time (the lower middle one)
+  std::vector<std::size_t> order(real.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return real[a] < real[b]; });
+  const nlohmann::json& first = out[order[(order.size() - 1) / 2]];
+  const std::string unit = first["time_unit"];  // one unit for the benchmark, the median run's
+  for (std::size_t i = 0; i < out.size(); ++i) set_times(out[i], real[i], cpu[i], unit);
+  const std::size_t n = runs.size();
+  out.push_back(aggregate_row(first, "mean", mean(real), mean(cpu), n));
+  out.push_back(aggregate_row(first, "median", median(real), median(cpu), n));
+  out.push_back(aggregate_row(first, "stddev", stddev(real), stddev(cpu), n));
+  out.push_back(aggregate_row(first, "cv", stddev(real) / mean(real), stddev(cpu) / mean(cpu), n));
+  return out;
 }
 
 nlohmann::json result_document(const nlohmann::json& rows) {

@@ -38,10 +38,25 @@ std::string limits_text(const RunResult& r, bool with_strain = true);
 /// A table cell: "yes" when the run meets the limits, else "no: " and what it misses.
 std::string limits_cell(const RunResult& r, bool with_strain = true);
 
-/// One benchmarks[] row named `name`: iterations, real_time = ms per iteration, and the counters
+/// One benchmarks[] row named `name`: iterations, real_time = collision (CD&R) plus cloth (CS) time per
+/// iteration, cpu_time = the running thread's CPU time per iteration over the phases (their stop checks,
+/// and for animations the body updates, included), both in time_unit (set_times), and the counters
 /// of DESIGN.md. Fields that do not apply (accuracy of a diverged run, fps of a static body) are
 /// omitted, never faked.
 nlohmann::json result_row(const RunResult& r, const std::string& name);
+
+/// real_time and cpu_time of a row given in ms, in `unit` (ns, us, ms, s; empty: the one that keeps
+/// real_time at 1 or more), written to time_unit.
+void set_times(nlohmann::json& row, double real_ms, double cpu_ms, std::string unit = "");
+
+/// A row's real_time or cpu_time (`key`) in ms, read in its time_unit.
+double row_time_ms(const nlohmann::json& row, const char* key);
+
+/// Google Benchmark's layout for repetitions: every run's row (run_name, repetitions, repetition_index)
+/// followed by the aggregates mean, median, stddev (aggregate_unit "time") and cv (a fraction,
+/// aggregate_unit "percentage") of real_time and cpu_time; other fields as the run with the median real time's. One run:
+/// its row as it is.
+nlohmann::json repetition_rows(const std::vector<nlohmann::json>& runs);
 
 /// {"context": machine_context(), "benchmarks": rows}.
 nlohmann::json result_document(const nlohmann::json& rows);

@@ -28,6 +28,15 @@ double RunResult::cs_ms_per_iteration() const {
   return n ? (sew.cs_ms + drape.cs_ms + animate.cs_ms) / double(n) : 0;
 }
 
+double RunResult::limit_ms_per_iteration() const {
+  const long n = iterations();
+  return n ? (sew.limit_ms + drape.limit_ms + animate.limit_ms) / double(n) : 0;
+}
+double RunResult::cpu_ms_per_iteration() const {
+  const long n = iterations();
+  return n ? (sew.cpu_ms + drape.cpu_ms + animate.cpu_ms) / double(n) : 0;
+}
+
 namespace {
 
 // the body and its motion: a (possibly animated) mesh, or a sphere moving at constant velocity
@@ -154,11 +163,14 @@ struct PhaseClock {
   const Simulator& sim;
   SimTimings start = sim.timings();
   Stopwatch wall;
+  double cpu_start = thread_cpu_ms();
   void finish(PhaseResult& r) const {
     r.iterations = sim.timings().iterations - start.iterations;
     r.cdr_ms = sim.timings().cdr_ms - start.cdr_ms;
     r.cs_ms = sim.timings().cs_ms - start.cs_ms;
+    r.limit_ms = sim.timings().limit_ms - start.limit_ms;
     r.wall_ms = wall.ms();
+    r.cpu_ms = thread_cpu_ms() - cpu_start;
   }
 };
 
@@ -335,13 +347,14 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   progress.plan(frames * steps);  // the measured window's collider sets the pace from here
   PhaseClock clock{sim};
   const double update_before = collider.stats().update_ms;
-  double not_animation_ms = 0;
+  double not_animation_ms = 0, not_animation_cpu_ms = 0;
   for (long f = 1; f <= frames && alive; ++f) {
     const double t = source.start() + double(f) * frame_dt;
     alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, frame, r.skinning_ms);
     ++r.frames;
     r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
     Stopwatch outside;  // the oracle and the caller's callback are not the animation's time
+    const double outside_cpu = thread_cpu_ms();
     if (options.measure_frames && alive) {
       const Oracle oracle(frame);
       Accuracy a = oracle.measure(sim.positions());
@@ -352,6 +365,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     }
     if (options.on_frame) options.on_frame(f, t, frame, sim);
     not_animation_ms += outside.ms();
+    not_animation_cpu_ms += thread_cpu_ms() - outside_cpu;
     progress.report("animate: frame %ld of %ld (t = %.2f s)", f, frames, t);
   }
   sim.set_collider(&collider);  // the wrappers end here
@@ -359,6 +373,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   r.collider_update_ms = collider.stats().update_ms - update_before;
   clock.finish(r.animate);
   r.animate.wall_ms -= not_animation_ms;
+  r.animate.cpu_ms -= not_animation_cpu_ms;
 }
 
 // "spring 40 (vertices 12-13), 1.32 m high, ends in contact 1/2, on a seam 0/2": where a spring is

@@ -23,8 +23,10 @@ inline constexpr const char* kDefinitions =
 struct PhaseResult {
   long iterations = 0;
   double wall_ms = 0;    ///< simulation wall time of the phase (CD&R + CS + body updates)
+  double cpu_ms = 0;     ///< CPU time of the phase's thread over the same span (the stop checks included)
   double cdr_ms = 0;     ///< collision detection and response
   double cs_ms = 0;      ///< cloth simulation
+  double limit_ms = 0;   ///< of cs_ms: the velocity limits
   bool reached = false;  ///< sew: sewn; drape: settled; animate: clip finished
 };
 
@@ -69,6 +71,9 @@ struct RunResult {
   double ms_per_iteration() const;
   double cdr_ms_per_iteration() const;
   double cs_ms_per_iteration() const;
+  double limit_ms_per_iteration() const;  ///< of cs: the velocity limits' passes
+  /// CPU time of the running thread per iteration over the phases (collider worker threads not counted).
+  double cpu_ms_per_iteration() const;
 };
 
 /// Called after every animation frame: frame number (1-based), animation time [s], body, cloth.

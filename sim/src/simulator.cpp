@@ -259,7 +259,9 @@ bool Simulator::step() {
   // limits, seam caps and the response act on the velocity that moves the points over the step
   const bool drifts = drift_.cols() == x_.cols();
   if (drifts) v_ += drift_ / dt_;
+  Stopwatch limit;
   limit_velocities();
+  double limit_ms = limit.ms();
   if (params_.seam_method == SeamMethod::kElastic) cap_seam_speeds();
   if (phase_ == Phase::kSew && params_.seam_method == SeamMethod::kAttraction) attract_seams();
   double cs_ms = cs.ms();
@@ -269,7 +271,9 @@ bool Simulator::step() {
   cs.restart();
   // the limit again, each pass followed by the contacts' non-penetration: the body stops the cloth's motion
   // into it, the limit its stretch along it (a Gauss-Seidel sweep over both constraints)
+  limit.restart();
   if (params_.limit_after_response && collider_) limit_velocities(true);
+  limit_ms += limit.ms();
   integrate_positions();
   if (drifts) v_ -= drift_ / dt_;  // back to the end-of-step velocity, with what limits and response changed
   limit_positions();
@@ -277,6 +281,7 @@ bool Simulator::step() {
   cs_ms += cs.ms();
   timings_.cdr_ms += cdr_ms;
   timings_.cs_ms += cs_ms;
+  timings_.limit_ms += limit_ms;
   ++timings_.iterations;
   ++iteration_;
   return check_divergence();

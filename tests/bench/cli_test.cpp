@@ -2,6 +2,7 @@
 // --version, help and listings, the accuracy verdict, the configuration hash, the time estimate.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -91,7 +92,13 @@ TEST_F(Cli, RunWritesTheResultFields) {
                           "cdr_ms", "cs_ms", "frames", "fps", "inside_pct", "depth_max_mm", "depth_p95_mm",
                           "strain_max", "strain_p99", "converged", "diverged"})
     EXPECT_TRUE(row.contains(key)) << key;
-  EXPECT_EQ(row["time_unit"], "ms");
+  // one unit per row, the one that keeps real_time at 1 or more; cpu_time measured (the thread's CPU time)
+  const std::string unit = row["time_unit"];
+  EXPECT_TRUE(unit == "ms" || unit == "us" || unit == "ns") << unit;
+  EXPECT_GE(row["real_time"].get<double>(), 1.0);
+  EXPECT_GT(row["cpu_time"].get<double>(), 0.0);
+  EXPECT_EQ(row["threads"], 1);  // github-action-benchmark's googlecpp reads name, real_time, cpu_time,
+  EXPECT_TRUE(row.contains("iterations"));  // time_unit, iterations and threads
   EXPECT_TRUE(doc["context"].contains("git_sha"));
   EXPECT_TRUE(fs::exists(dir_ / "r.png"));
   EXPECT_FALSE(fs::exists(json + ".tmp"));
@@ -114,18 +121,48 @@ TEST_F(Cli, MapsWithoutOpenGlUseTheCpuRendererAndNameTheMissingOption) {
 #endif
 }
 
-TEST_F(Cli, CompareFlagsARegression) {
-  const auto write = [&](const std::string& name, double t) {
-    std::ofstream((dir_ / name).string())
-        << nlohmann::json{{"context", {}}, {"benchmarks", {{{"name", "a/b"}, {"real_time", t}}}}}.dump();
-  };
-  write("old.json", 1.0);
-  write("same.json", 1.05);
-  write("slow.json", 1.5);
-  const std::string old = (dir_ / "old.json").string();
-  EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "same.json").string()), 0);
-  EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "slow.json").string()), 1);
-  EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "slow.json").string() + " --threshold 60"), 0);
+// a result file of `reps` repetitions of row NAME around time t (ms; +-1 % apart, as repetitions are)
+void write_runs(const std::string& path, const std::string& name, double t, int reps, const std::string& hash = "") {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < reps; ++i) {
+    nlohmann::json row{{"name", name}, {"run_type", "iteration"}, {"real_time", t * (1 + 0.01 * (i - reps / 2))},
+                       {"time_unit", "ms"}};
+    if (!hash.empty()) row["config_hash"] = hash;
+    rows.push_back(row);
+  }
+  std::ofstream(path) << nlohmann::json{{"context", {}}, {"benchmarks", rows}}.dump();
+}
+
+TEST_F(Cli, CompareFlagsARegressionOnlyWithEnoughRepetitions) {
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  write_runs(file("old.json"), "a/b", 1.0, 5);
+  write_runs(file("same.json"), "a/b", 1.05, 5);
+  write_runs(file("slow.json"), "a/b", 1.5, 5);
+  write_runs(file("once.json"), "a/b", 1.5, 1);
+  const std::string old = file("old.json"), log = file("log");
+  EXPECT_EQ(clothbench("compare " + old + " " + file("same.json")), 0);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("slow.json"), log), 1);
+  EXPECT_NE(read(log).find("REGRESSION"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("slow.json") + " --threshold 60"), 0);
+  // one run against five: no verdict, and nothing judged is exit 2, not a pass
+  EXPECT_EQ(clothbench("compare " + old + " " + file("once.json"), log), 2);
+  EXPECT_NE(read(log).find("no verdict: 5 vs 1 repetitions (need >= 5 on both sides)"), std::string::npos) << read(log);
+}
+
+TEST_F(Cli, CompareListsRowsOnOneSideOnlyAndReadsEachRowsTimeUnit) {
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  write_runs(file("old.json"), "a/b", 1.0, 5);
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 5; ++i)  // the same times in us, and a row the old file lacks
+    rows.push_back({{"name", "a/b"}, {"real_time", 1000.0 * (1 + 0.01 * (i - 2))}, {"time_unit", "us"}}),
+        rows.push_back({{"name", "a/new"}, {"real_time", 1.0}, {"time_unit", "ms"}});
+  std::ofstream(file("new.json")) << nlohmann::json{{"context", {}}, {"benchmarks", rows}}.dump();
+  const std::string log = file("log");
+  EXPECT_EQ(clothbench("compare " + file("old.json") + " " + file("new.json"), log), 0) << read(log);
+  EXPECT_NE(read(log).find("only in new"), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find("1.000 ["), std::string::npos) << read(log);  // 1 ms = 1000 us
+  EXPECT_EQ(clothbench("compare " + file("new.json") + " " + file("old.json"), log), 0) << read(log);
+  EXPECT_NE(read(log).find("only in old"), std::string::npos) << read(log);
 }
 
 TEST_F(Cli, VersionPrintsTheVersionAndTheGitSha) {
@@ -215,7 +252,7 @@ TEST_F(Cli, RunRecordsTheOverridesAndTheConfigHashAndCompareFlagsADifferentConfi
   const auto other = nlohmann::json::parse(read(b));
   EXPECT_NE(other["context"]["config_hash"], hash);
   ASSERT_EQ(other["benchmarks"][0]["name"], doc["benchmarks"][0]["name"]);
-  EXPECT_EQ(clothbench("compare " + a + " " + b + " --threshold 0", log), 0) << read(log);
+  EXPECT_EQ(clothbench("compare " + a + " " + b + " --threshold 0", log), 2) << read(log);  // nothing judged
   EXPECT_NE(read(log).find("CONFIG DIFFERS (not judged)"), std::string::npos) << read(log);
   EXPECT_NE(read(log).find("warning: 1 row(s) ran with a different configuration"), std::string::npos) << read(log);
   clothbench("compare " + a + " " + a, log);
@@ -223,18 +260,44 @@ TEST_F(Cli, RunRecordsTheOverridesAndTheConfigHashAndCompareFlagsADifferentConfi
 }
 
 TEST_F(Cli, CompareDoesNotJudgeRowsOfDifferentConfigurations) {
-  const auto write = [&](const std::string& name, double t, const std::string& hash) {
-    std::ofstream((dir_ / name).string())
-        << nlohmann::json{{"context", {}}, {"benchmarks", {{{"name", "a/b"}, {"real_time", t}, {"config_hash", hash}}}}}
-               .dump();
-  };
-  write("old.json", 1.0, "0000000000000001");
-  write("slow.json", 1.5, "0000000000000001");
-  write("other.json", 1.5, "0000000000000002");
-  const std::string old = (dir_ / "old.json").string(), log = (dir_ / "log").string();
-  EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "slow.json").string()), 1);
-  EXPECT_EQ(clothbench("compare " + old + " " + (dir_ / "other.json").string(), log), 0);
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  write_runs(file("old.json"), "a/b", 1.0, 5, "0000000000000001");
+  write_runs(file("slow.json"), "a/b", 1.5, 5, "0000000000000001");
+  write_runs(file("other.json"), "a/b", 1.5, 5, "0000000000000002");
+  const std::string old = file("old.json"), log = file("log");
+  EXPECT_EQ(clothbench("compare " + old + " " + file("slow.json")), 1);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("other.json"), log), 2);  // the only row is not judged
   EXPECT_NE(read(log).find("CONFIG DIFFERS"), std::string::npos) << read(log);
+}
+
+// --repetitions: a row per run (run_name, repetition_index) and Google Benchmark's aggregates, which compare
+// reads back as samples of one benchmark
+TEST_F(Cli, RunWithRepetitionsWritesEveryRunAndTheAggregates) {
+  const std::string a = (dir_ / "a.json").string(), log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("run --quiet --repetitions 5 " + kScenes + kSmallRun + " --json " + a, log), 0) << read(log);
+  EXPECT_NE(read(log).find("5 repetitions: per iteration median"), std::string::npos) << read(log);
+  const auto rows = nlohmann::json::parse(read(a))["benchmarks"];
+  ASSERT_EQ(rows.size(), 9u);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(rows[i]["run_type"], "iteration");
+    EXPECT_EQ(rows[i]["repetition_index"], i);
+    EXPECT_EQ(rows[i]["run_name"], rows[0]["name"]);
+  }
+  const char* aggregates[] = {"mean", "median", "stddev", "cv"};
+  for (int i = 0; i < 4; ++i) {
+    const auto& g = rows[5 + i];
+    EXPECT_EQ(g["run_type"], "aggregate");
+    EXPECT_EQ(g["aggregate_name"], aggregates[i]);
+    EXPECT_EQ(g["name"], rows[0]["name"].get<std::string>() + "_" + aggregates[i]);
+    EXPECT_EQ(g["aggregate_unit"], i == 3 ? "percentage" : "time");
+  }
+  std::vector<double> t;
+  for (int i = 0; i < 5; ++i) t.push_back(rows[i]["real_time"].get<double>());
+  std::sort(t.begin(), t.end());
+  EXPECT_DOUBLE_EQ(rows[6]["real_time"].get<double>(), t[2]);  // the median of the five
+  // the same file on both sides: five samples each, judged, no regression
+  EXPECT_EQ(clothbench("compare " + a + " " + a, log), 0) << read(log);
+  EXPECT_NE(read(log).find("among 1 judged row(s)"), std::string::npos) << read(log);
 }
 
 // the verdict against the accuracy limits: in the summary (never "converged yes" alone), in the

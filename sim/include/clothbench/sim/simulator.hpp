@@ -114,6 +114,7 @@ struct StrainStats {
 struct SimTimings {
   double cdr_ms = 0;  ///< collision detection (collider query) and response
   double cs_ms = 0;   ///< cloth simulation: forces (the reaction force of Eq. 16 included), integration, limits, seaming
+  double limit_ms = 0;  ///< of cs_ms: the velocity limits' passes (super-elasticity, walking Eqs. 5-6)
   long iterations = 0;
 };
 

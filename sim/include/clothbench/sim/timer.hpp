@@ -1,5 +1,7 @@
 #pragma once
-/// Wall-clock stopwatch in milliseconds (steady clock).
+/// Wall-clock stopwatch in milliseconds (steady clock), and the calling thread's CPU time.
+#include <time.h>
+
 #include <chrono>
 
 namespace clothbench {
@@ -16,5 +18,12 @@ class Stopwatch {
  private:
   std::chrono::steady_clock::time_point start_;
 };
+
+/// CPU time the calling thread has used [ms] (POSIX CLOCK_THREAD_CPUTIME_ID).
+inline double thread_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
 
 }  // namespace clothbench
