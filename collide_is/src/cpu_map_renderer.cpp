@@ -66,17 +66,17 @@ class CpuMapRenderer final : public MapRenderer {
   std::string_view name() const override { return "cpu"; }
 
   void render(const BodyFrame& body, MapSet& maps) override {
-    // window coordinates and z-buffer depth of both views, as GL computes them
+    // window coordinates and z-buffer depth of every view, as GL computes them
     project(body, maps.frame);
     // z-buffer cleared to the far plane, turned into geometry space at the end (as GL's read-back)
     std::fill(maps.z.begin(), maps.z.end(), 1.0f);
-    // one pass over the triangles, both views
+    // one pass over the triangles, every view
     for (Eigen::Index t = 0; t < body.triangles.cols(); ++t) {
       const int i0 = body.triangles(0, t), i1 = body.triangles(1, t), i2 = body.triangles(2, t);
       attributes(body, maps.has_velocity, i0, a_[0]);
       attributes(body, maps.has_velocity, i1, a_[1]);
       attributes(body, maps.has_velocity, i2, a_[2]);
-      for (int view = 0; view < 2; ++view) {
+      for (int view = 0; view < maps.frame.views; ++view) {
         const auto& w = window_[view];
         draw(maps, view, {w[i0], w[i1], w[i2]}, a_);
       }
@@ -85,20 +85,22 @@ class CpuMapRenderer final : public MapRenderer {
   }
 
  private:
-  // clip coordinates as the vertex shader computes them (w = 1), then llvmpipe's viewport
-  // transform (draw_llvm) into the size x 2 size target, the back view above the front
+  // clip coordinates as the vertex shader computes them (w = 1; each clip coordinate has one
+  // non-zero matrix entry, on the view's column, row or depth axis), then llvmpipe's viewport
+  // transform (draw_llvm) into the size x (views x size) target, the back view above the front
   void project(const BodyFrame& body, const MapFrame& f) {
     const int nv = body.vertex_count();
     const float half = 0.5f * static_cast<float>(f.size);
-    for (int view = 0; view < 2; ++view) {
+    for (int view = 0; view < f.views; ++view) {
       const std::array<float, 16> m = clip_from_world(f, view);
+      const int cu = MapFrame::column_axis(view), rv = MapFrame::row_axis(view), d = MapFrame::view_axis(view);
       const float y_translate = half + static_cast<float>(view * f.size);
       auto& w = window_[view];
       w.resize(nv);
       for (int v = 0; v < nv; ++v) {
-        const float xc = m[0] * body.positions(0, v) + m[12];
-        const float yc = m[5] * body.positions(1, v) + m[13];
-        const float zc = m[10] * body.positions(2, v) + m[14];
+        const float xc = m[4 * cu] * body.positions(cu, v) + m[12];
+        const float yc = m[4 * rv + 1] * body.positions(rv, v) + m[13];
+        const float zc = m[4 * d + 2] * body.positions(d, v) + m[14];
         w[v].x = mul_add(fused_, xc, half, half);
         w[v].y = mul_add(fused_, yc, half, y_translate);
         w[v].zbuf = mul_add(fused_, zc, 0.5f, 0.5f);
@@ -223,7 +225,7 @@ class CpuMapRenderer final : public MapRenderer {
   }
 
   bool fused_ = host_fuses_multiply_add();           // fuse multiply-adds as llvmpipe does on this host
-  std::array<std::vector<WindowVertex>, 2> window_;  // per view, one per body vertex
+  std::array<std::vector<WindowVertex>, 6> window_;  // per view, one per body vertex
   std::array<Attributes, 3> a_;                      // the current triangle's vertex attributes
 };
 

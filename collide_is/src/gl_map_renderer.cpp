@@ -1,4 +1,4 @@
-// The OpenGL renderer of the image-space maps: OSMesa (llvmpipe), one FBO holding both views.
+// The OpenGL renderer of the image-space maps: OSMesa (llvmpipe), one FBO holding every view.
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -133,12 +133,14 @@ class GlMapRenderer final : public MapRenderer {
 
   void make_current() { OSMesaMakeCurrent(ctx_, client_.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide); }
 
-  // (re)creates the FBO when size or encoding changed: size x 2 size, front below back
+  // (re)creates the FBO when size, view count or encoding changed: size x (views x size), front
+  // below back, the extra views above them
   void targets(const MapSet& maps) {
-    const bool same = fbo_ && size_ == maps.frame.size && float_ == maps.float_maps;
+    const bool same = fbo_ && size_ == maps.frame.size && views_ == maps.frame.views && float_ == maps.float_maps;
     if (same) return;
     release_targets();
     size_ = maps.frame.size;
+    views_ = maps.frame.views;
     float_ = maps.float_maps;
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -149,11 +151,12 @@ class GlMapRenderer final : public MapRenderer {
     const std::array<GLenum, 3> points = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_DEPTH_ATTACHMENT};
     for (std::size_t k = 0; k < rbo_.size(); ++k) {
       glBindRenderbuffer(GL_RENDERBUFFER, rbo_[k]);
-      glRenderbufferStorage(GL_RENDERBUFFER, formats[k], size_, 2 * size_);
+      glRenderbufferStorage(GL_RENDERBUFFER, formats[k], size_, views_ * size_);
       glFramebufferRenderbuffer(GL_FRAMEBUFFER, points[k], GL_RENDERBUFFER, rbo_[k]);
     }
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw std::runtime_error("is-gl: framebuffer of " + std::to_string(size_) + "^2 maps is incomplete");
+      throw std::runtime_error("is-gl: framebuffer of " + std::to_string(views_) + " x " + std::to_string(size_) +
+                               "^2 maps is incomplete");
   }
 
   void release_targets() {
@@ -182,7 +185,7 @@ class GlMapRenderer final : public MapRenderer {
                  body.triangles.data(), GL_STREAM_DRAW);
   }
 
-  // both views, depth test keeping the surface nearest each camera; both targets always bound so
+  // every view, depth test keeping the surface nearest each camera; both targets always bound so
   // a moving frame after a static one needs no new shader variant (a static body's velocity
   // target gets zeros and is not read back)
   void draw(const BodyFrame& body, const MapSet& maps) {
@@ -199,7 +202,7 @@ class GlMapRenderer final : public MapRenderer {
     glUniform1i(u_encode8_, maps.float_maps ? 0 : 1);
     glUniform1f(u_max_speed_, maps.max_speed);
     glEnable(GL_SCISSOR_TEST);
-    for (int view = 0; view < 2; ++view) {
+    for (int view = 0; view < views_; ++view) {
       glViewport(0, view * size_, size_, size_);
       glScissor(0, view * size_, size_, size_);
       const std::array<float, 16> m = clip_from_world(maps.frame, view);
@@ -211,14 +214,14 @@ class GlMapRenderer final : public MapRenderer {
   // depth and colour targets straight into the MapSet; z-buffer to geometry space (dressing Eq. 5)
   void read_back(MapSet& maps) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, size_, 2 * size_, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data());
+    glReadPixels(0, 0, size_, views_ * size_, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data());
     const GLenum type = maps.float_maps ? GL_FLOAT : GL_UNSIGNED_BYTE;
     glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glReadPixels(0, 0, size_, 2 * size_, GL_RGBA, type,
+    glReadPixels(0, 0, size_, views_ * size_, GL_RGBA, type,
                  maps.float_maps ? static_cast<void*>(maps.normal.data()) : maps.normal8.data());
     if (maps.has_velocity) {
       glReadBuffer(GL_COLOR_ATTACHMENT1);
-      glReadPixels(0, 0, size_, 2 * size_, GL_RGBA, type,
+      glReadPixels(0, 0, size_, views_ * size_, GL_RGBA, type,
                    maps.float_maps ? static_cast<void*>(maps.velocity.data()) : maps.velocity8.data());
     }
     depth_from_zbuffer(maps);
@@ -231,6 +234,7 @@ class GlMapRenderer final : public MapRenderer {
   std::array<GLuint, 3> rbo_{};  // normal, velocity, depth
   GLint u_clip_ = -1, u_encode8_ = -1, u_max_speed_ = -1;
   int size_ = 0;
+  int views_ = 2;
   bool float_ = true;
 };
 

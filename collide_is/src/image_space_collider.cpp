@@ -11,9 +11,10 @@
 namespace clothbench {
 
 ImageSpaceCollider::ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, const ColliderOptions& options,
-                                       double setup_ms, DepthTest test)
-    : renderer_(std::move(renderer)), options_(options), test_(test) {
+                                       double setup_ms, DepthTest test, ViewRule rule)
+    : renderer_(std::move(renderer)), options_(options), test_(test), rule_(rule) {
   if (!renderer_) throw std::invalid_argument("ImageSpaceCollider: no renderer");
+  check_view_options(options);
   if (!(options.max_speed > 0)) throw std::invalid_argument("ImageSpaceCollider: max_speed must be > 0");
   stats_.setup_ms = setup_ms;
 }
@@ -25,7 +26,7 @@ void ImageSpaceCollider::render(const BodyFrame& body) {
   maps_.reset(make_map_frame(bounding_box(body.positions), options_), options_.float_maps, body.moving,
               options_.max_speed);
   renderer_->render(body, maps_);
-  if (options_.side_layer) add_side_layer(maps_);
+  if (const int rings = side_layer_rings(options_, maps_.frame.pixel)) add_side_layer(maps_, rings);
 }
 
 void ImageSpaceCollider::set_body(const BodyFrame& body) {
@@ -50,16 +51,18 @@ void ImageSpaceCollider::update_body(const BodyFrame& body) {
 
 namespace {
 
-// element of `view` at front-map column col (the back map is mirrored, dressing Eq. 8)
+// element of `view` at unmirrored column col (only the back map is mirrored, dressing Eq. 8)
 inline std::size_t element(const MapSet& m, int view, int col, int row) {
   const int n = m.frame.size;
-  return m.index(view, view == MapSet::kFront ? col : n - 1 - col, row);
+  return m.index(view, view == MapSet::kBack ? n - 1 - col : col, row);
 }
 
-// normal and velocity blended bilinearly over the four pixel centres around world (x, y);
-// false (outputs untouched) unless all four are body pixels of `view`
-bool blend(const MapSet& m, int view, Real x, Real y, Vec3& normal, Vec3& velocity) {
-  const Real u = m.frame.front_u(x) - 0.5f, v = m.frame.map_v(y) - 0.5f;
+// normal and velocity blended bilinearly over the four pixel centres around world (a, b), the
+// view's column and row coordinates; false (outputs untouched) unless all four are body pixels
+bool blend(const MapSet& m, int view, Real a_world, Real b_world, Vec3& normal, Vec3& velocity) {
+  const MapFrame& f = m.frame;
+  const Real u = (a_world - f.origin(MapFrame::column_axis(view))) / f.pixel - 0.5f;
+  const Real v = (b_world - f.origin(MapFrame::row_axis(view))) / f.pixel - 0.5f;
   if (!(u >= 0 && v >= 0 && u < m.frame.size - 1 && v < m.frame.size - 1)) return false;
   const int col = static_cast<int>(u), row = static_cast<int>(v);
   const Real a = u - col, b = v - row;
@@ -77,35 +80,79 @@ bool blend(const MapSet& m, int view, Real x, Real y, Vec3& normal, Vec3& veloci
   return true;
 }
 
+// one pair of opposite views' answer at a point (views 2 pair and 2 pair + 1)
+struct PairAnswer {
+  Real depth = 0;   // max(p - front surface, back surface - p) along the pair's axis [m]; +inf empty
+  int view = 0;     // the view whose surface is nearer
+  int col = 0, row = 0;  // the pixel (unmirrored window column and row)
+};
+
+// dressing Eq. 5/9, walking Eq. 11/12 along the pair's axis; false when p is outside its image
+bool pair_answer(const MapSet& m, int pair, const Vec3& p, PairAnswer& a) {
+  const MapFrame& f = m.frame;
+  const int front = 2 * pair, cu = MapFrame::column_axis(front), rv = MapFrame::row_axis(front);
+  const int axis = MapFrame::view_axis(front);
+  // world -> map (dressing Eq. 8 / walking Eq. 11): front column u, back column size - 1 - u
+  const Real u = (p[cu] - f.origin(cu)) / f.pixel, v = (p[rv] - f.origin(rv)) / f.pixel;
+  if (!(u >= 0 && v >= 0 && u < f.size && v < f.size)) return false;
+  a.col = static_cast<int>(u), a.row = static_cast<int>(v);
+  const std::size_t fi = element(m, front, a.col, a.row), bi = element(m, front + 1, a.col, a.row);
+  // between the front and back surfaces within tol (dressing Eq. 5/9, walking Eq. 12)
+  const Real d_front = p[axis] - m.z[fi], d_back = m.z[bi] - p[axis];
+  a.depth = std::max(d_front, d_back);
+  // the nearer surface's map answers (beyond the local body centre: the front map)
+  a.view = d_front >= d_back ? front : front + 1;
+  return true;
+}
+
+// whether pair answer `b` replaces `a` under `rule`
+bool replaces(ViewRule rule, const PairAnswer& a, const PairAnswer& b) {
+  if (rule == ViewRule::kAllPairs) return b.depth > a.depth;
+  if (rule == ViewRule::kAnyPair) return b.depth < a.depth;
+  // kHull: a pair that sees the point outside its surfaces wins (the nearest such); inside every
+  // pair, the pair whose surface is nearest along its axis
+  if (a.depth > 0) return b.depth > 0 && b.depth < a.depth;
+  return b.depth > 0 || b.depth > a.depth;
+}
+
+// the answering pair of views at p; false when no pair's image holds p
+bool choose(const MapSet& m, ViewRule rule, const Vec3& p, PairAnswer& best) {
+  bool any = false;
+  for (int pair = 0; pair < m.frame.views / 2; ++pair) {
+    PairAnswer a;
+    if (!pair_answer(m, pair, p, a)) continue;
+    if (!any || replaces(rule, best, a)) best = a;
+    any = true;
+  }
+  return any;
+}
+
 }  // namespace
 
 bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
   const MapFrame& f = maps_.frame;
   const Real tol = options_.tol;
   c.depth = std::numeric_limits<float>::infinity();
-  // world -> map (dressing Eq. 8 / walking Eq. 11): front column u, back column size - 1 - u
-  const Real u = f.front_u(p.x()), v = f.map_v(p.y());
-  if (!(u >= 0 && v >= 0 && u < f.size && v < f.size)) return false;
-  const int col = static_cast<int>(u), row = static_cast<int>(v);
-  const std::size_t fi = element(maps_, MapSet::kFront, col, row), bi = element(maps_, MapSet::kBack, col, row);
-  // between the front and back surfaces within tol (dressing Eq. 5/9, walking Eq. 12)
-  const Real d_front = p.z() - maps_.z[fi], d_back = maps_.z[bi] - p.z();
-  const Real depth_z = std::max(d_front, d_back);
+  PairAnswer a;
+  if (!choose(maps_, rule_, p, a)) return false;
+  const Real depth_z = a.depth;
   const bool plane = test_ == DepthTest::kTangentPlane;
   if (!(depth_z < (plane ? tol + f.pixel : tol))) {
     c.depth = std::max(depth_z, tol);
     return false;
   }
-  // the nearer surface's map answers (z beyond the local body centre: the front map)
-  const int view = d_front >= d_back ? MapSet::kFront : MapSet::kBack;
-  const std::size_t i = view == MapSet::kFront ? fi : bi;
+  const int view = a.view, cu = MapFrame::column_axis(view), rv = MapFrame::row_axis(view);
+  const std::size_t i = element(maps_, view, a.col, a.row);
   c.depth = depth_z;
   c.normal = maps_.normal_at(i);
   bool blended = false;
   if (plane) {
     // signed distance to the tangent plane at the pixel centre's surface point; points between
-    // the surfaces stay inside (the plane distance never exceeds the distance along z)
-    const Vec3 s(f.x0 + (col + 0.5f) * f.pixel, f.y0 + (row + 0.5f) * f.pixel, maps_.z[i]);
+    // the surfaces stay inside (the plane distance never exceeds the distance along the axis)
+    Vec3 s;
+    s[cu] = f.origin(cu) + (a.col + 0.5f) * f.pixel;
+    s[rv] = f.origin(rv) + (a.row + 0.5f) * f.pixel;
+    s[MapFrame::view_axis(view)] = maps_.z[i];
     const Real d = (p - s).dot(c.normal);
     c.depth = depth_z < 0 ? std::clamp(d, depth_z, 0.0f) : d;
     if (!(c.depth < tol)) {
@@ -115,7 +162,7 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
     }
     // normal and velocity at the foot of the perpendicular, blended over four pixel centres
     const Vec3 foot = p - d * c.normal;
-    blended = blend(maps_, view, foot.x(), foot.y(), c.normal, c.body_velocity);
+    blended = blend(maps_, view, foot[cu], foot[rv], c.normal, c.body_velocity);
   }
   if (!blended) c.body_velocity = maps_.velocity_at(i);
   // side-layer pixels stand for the tolerance band outside the silhouette (dressing 5.4)

@@ -1,13 +1,24 @@
 #include "clothbench/collide_is/map_set.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace clothbench {
 
+void check_view_options(const ColliderOptions& options) {
+  if (options.views != 2 && options.views != 4 && options.views != 6)
+    throw std::invalid_argument("image-space maps: views must be 2 (front/back), 4 (+ left/right) or 6 (+ top/bottom), got " +
+                                std::to_string(options.views));
+  if (!(options.side_layer_mm >= 0) || !std::isfinite(options.side_layer_mm))
+    throw std::invalid_argument("image-space maps: side_layer_mm must be a finite number >= 0 (0: one pixel), got " +
+                                std::to_string(options.side_layer_mm));
+}
+
 MapFrame make_map_frame(const Box3& box, const ColliderOptions& options) {
+  check_view_options(options);
   if (options.map_size < 8)
     throw std::invalid_argument("image-space maps: map_size must be >= 8, got " + std::to_string(options.map_size));
   const Vec3 size = box.size();
@@ -18,7 +29,9 @@ MapFrame make_map_frame(const Box3& box, const ColliderOptions& options) {
   const Vec3 c = box.center();
   if (options.fit_extent) {
     // the box's larger side plus two pixels each way, centred on the box
-    f.pixel = std::max(size.x(), size.y()) / static_cast<Real>(f.size - 4);
+    // (with the views along X and Y, the box's depth too, so their squares hold it as well)
+    const Real extent = options.views > 2 ? size.maxCoeff() : std::max(size.x(), size.y());
+    f.pixel = extent / static_cast<Real>(f.size - 4);
     f.x0 = c.x() - 0.5f * f.size * f.pixel;
     f.y0 = c.y() - 0.5f * f.size * f.pixel;
   } else {
@@ -31,10 +44,41 @@ MapFrame make_map_frame(const Box3& box, const ColliderOptions& options) {
   f.z_min = box.min.z() - options.tol;
   f.z_max = box.max.z() + options.tol;
   if (!(f.z_max > f.z_min)) throw std::invalid_argument("image-space maps: body bounding box has no depth");
+  // the views along X and Y (beyond the papers): the same pixel, the square centred on the box in z
+  f.views = options.views;
+  f.z0 = c.z() - 0.5f * f.size * f.pixel;
+  f.x_min = box.min.x() - options.tol;
+  f.x_max = box.max.x() + options.tol;
+  f.y_min = box.min.y() - options.tol;
+  f.y_max = box.max.y() + options.tol;
   return f;
 }
 
+namespace {
+
+// the views along X and Y: column and row axes over the square, not mirrored; the depth axis to -1
+// at the near plane (the + face for even views, the - face for odd ones)
+std::array<float, 16> extra_view_clip(const MapFrame& f, int view) {
+  const float side = f.size * f.pixel;
+  const float sx = 2.0f / side;
+  const int cu = MapFrame::column_axis(view), rv = MapFrame::row_axis(view), d = MapFrame::view_axis(view);
+  const float lo = f.plane_min(d), hi = f.plane_max(d), sz = 2.0f / (hi - lo);
+  std::array<float, 16> m{};
+  m[4 * cu + 0] = sx, m[12] = -1.0f - sx * f.origin(cu);
+  m[4 * rv + 1] = sx, m[13] = -1.0f - sx * f.origin(rv);
+  if (view % 2 == 0) {
+    m[4 * d + 2] = -sz, m[14] = sz * hi - 1.0f;
+  } else {
+    m[4 * d + 2] = sz, m[14] = -sz * lo - 1.0f;
+  }
+  m[15] = 1.0f;
+  return m;
+}
+
+}  // namespace
+
 std::array<float, 16> clip_from_world(const MapFrame& f, int view) {
+  if (view >= 2) return extra_view_clip(f, view);
   const float side = f.size * f.pixel;
   const float sx = 2.0f / side, sz = 2.0f / f.depth_range();
   std::array<float, 16> m{};
@@ -59,16 +103,17 @@ void MapSet::reset(const MapFrame& new_frame, bool floats, bool with_velocity, R
   max_speed = maxv;
   const std::size_t n = view_pixels();
   const float inf = std::numeric_limits<float>::infinity();
-  // depth: front empty = -inf, back empty = +inf, so the comparison of Eq. 9 always fails there
-  z.resize(2 * n);
-  std::fill(z.begin(), z.begin() + n, -inf);
-  std::fill(z.begin() + n, z.end(), inf);
-  mask.assign(2 * n, kEmpty);
+  const std::size_t views = static_cast<std::size_t>(new_frame.views);
+  // depth: front (even views) empty = -inf, back (odd) empty = +inf, so the comparison of Eq. 9
+  // always fails there
+  z.resize(views * n);
+  for (std::size_t k = 0; k < views; ++k) std::fill_n(z.begin() + k * n, n, k % 2 == 0 ? -inf : inf);
+  mask.assign(views * n, kEmpty);
   // attributes in the chosen encoding only
-  normal.resize(floats ? 8 * n : 0);
-  normal8.resize(floats ? 0 : 8 * n);
-  velocity.resize(floats && with_velocity ? 8 * n : 0);
-  velocity8.resize(!floats && with_velocity ? 8 * n : 0);
+  normal.resize(floats ? 4 * views * n : 0);
+  normal8.resize(floats ? 0 : 4 * views * n);
+  velocity.resize(floats && with_velocity ? 4 * views * n : 0);
+  velocity8.resize(!floats && with_velocity ? 4 * views * n : 0);
 }
 
 Vec3 MapSet::raw_normal_at(std::size_t i) const {
@@ -108,48 +153,74 @@ void copy_pixel(MapSet& m, std::size_t from, std::size_t to) {
 
 }  // namespace
 
-void add_side_layer(MapSet& maps) {
+namespace {
+
+// one ring of the layer in one view: every empty 8-neighbour of a `source` pixel joins ring `ring`
+// with the values of the nearest such source (ring[] holds each pixel's ring, 0 for body pixels)
+void grow_ring(MapSet& maps, int view, std::vector<std::uint8_t>& rings, int ring) {
   const int n = maps.frame.size;
-  for (int view = 0; view < 2; ++view) {
-    // front camera: nearer is the larger z; back camera: the smaller
-    const auto nearer = [view](float a, float b) { return view == MapSet::kFront ? a > b : a < b; };
-    for (int row = 0; row < n; ++row) {
-      for (int col = 0; col < n; ++col) {
-        const std::size_t i = maps.index(view, col, row);
-        if (maps.mask[i] != MapSet::kBody) continue;
-        // dressing 5.4: each empty 8-neighbour joins the layer with the nearest body pixel's values
-        for (int dr = -1; dr <= 1; ++dr) {
-          for (int dc = -1; dc <= 1; ++dc) {
-            const int c = col + dc, r = row + dr;
-            if (c < 0 || r < 0 || c >= n || r >= n) continue;
-            const std::size_t j = maps.index(view, c, r);
-            const bool take =
-                maps.mask[j] == MapSet::kEmpty || (maps.mask[j] == MapSet::kSide && nearer(maps.z[i], maps.z[j]));
-            if (!take) continue;
-            copy_pixel(maps, i, j);
-            maps.mask[j] = MapSet::kSide;
-          }
+  // front camera (even views): nearer is the larger coordinate; back camera (odd): the smaller
+  const auto nearer = [view](float a, float b) { return view % 2 == 0 ? a > b : a < b; };
+  const std::uint8_t source_mask = ring == 1 ? MapSet::kBody : MapSet::kSide;
+  for (int row = 0; row < n; ++row) {
+    for (int col = 0; col < n; ++col) {
+      const std::size_t i = maps.index(view, col, row);
+      if (maps.mask[i] != source_mask || (ring > 1 && rings[i] != ring - 1)) continue;
+      // dressing 5.4: each empty 8-neighbour joins the layer with the nearest source pixel's values
+      for (int dr = -1; dr <= 1; ++dr) {
+        for (int dc = -1; dc <= 1; ++dc) {
+          const int c = col + dc, r = row + dr;
+          if (c < 0 || r < 0 || c >= n || r >= n) continue;
+          const std::size_t j = maps.index(view, c, r);
+          const bool take = maps.mask[j] == MapSet::kEmpty ||
+                            (maps.mask[j] == MapSet::kSide && rings[j] == ring && nearer(maps.z[i], maps.z[j]));
+          if (!take) continue;
+          copy_pixel(maps, i, j);
+          maps.mask[j] = MapSet::kSide;
+          rings[j] = static_cast<std::uint8_t>(ring);
         }
       }
     }
   }
 }
 
+}  // namespace
+
+void add_side_layer(MapSet& maps, int rings) {
+  std::vector<std::uint8_t> ring_of(maps.mask.size(), 0);
+  for (int view = 0; view < maps.frame.views; ++view)
+    for (int ring = 1; ring <= std::clamp(rings, 1, 255); ++ring) grow_ring(maps, view, ring_of, ring);
+}
+
+int side_layer_rings(const ColliderOptions& options, Real pixel) {
+  if (!options.side_layer) return 0;
+  if (!(options.side_layer_mm > 0)) return 1;
+  const double rings = std::ceil(1e-3 * double(options.side_layer_mm) / double(pixel) - 1e-6);
+  return static_cast<int>(std::clamp(rings, 1.0, 255.0));
+}
+
 void depth_from_zbuffer(MapSet& maps) {
   const MapFrame& f = maps.frame;
   const std::size_t n = maps.view_pixels();
   const float inf = std::numeric_limits<float>::infinity();
-  for (std::size_t i = 0; i < 2 * n; ++i) {
+  for (std::size_t i = 0; i < maps.z.size(); ++i) {
     const float zbuf = maps.z[i];
-    const bool front = i < n;
+    const int view = static_cast<int>(i / n);
+    const bool front = view % 2 == 0;
     // nothing drawn: the comparison of Eq. 9 must fail there
     if (zbuf >= 1.0f) {
       maps.z[i] = front ? -inf : inf;
       maps.mask[i] = MapSet::kEmpty;
       continue;
     }
-    // dressing Eq. 5: z-buffer to geometry space
-    maps.z[i] = front ? f.z_max - zbuf * f.depth_range() : f.z_min + zbuf * f.depth_range();
+    // dressing Eq. 5: z-buffer to geometry space (along the view's axis for the extra views)
+    const int axis = MapFrame::view_axis(view);
+    const Real lo = f.plane_min(axis), hi = f.plane_max(axis);
+    if (view < 2) {
+      maps.z[i] = front ? f.z_max - zbuf * f.depth_range() : f.z_min + zbuf * f.depth_range();
+    } else {
+      maps.z[i] = front ? hi - zbuf * (hi - lo) : lo + zbuf * (hi - lo);
+    }
     maps.mask[i] = MapSet::kBody;
   }
 }
@@ -167,7 +238,7 @@ MapSet render_maps(const BodyFrame& body, std::string_view renderer, const Colli
   MapSet maps;
   maps.reset(make_map_frame(bounding_box(body.positions), options), options.float_maps, body.moving, options.max_speed);
   r->render(body, maps);
-  if (options.side_layer) add_side_layer(maps);
+  if (const int rings = side_layer_rings(options, maps.frame.pixel)) add_side_layer(maps, rings);
   return maps;
 }
 

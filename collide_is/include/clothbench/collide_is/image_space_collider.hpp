@@ -20,6 +20,24 @@ enum class DepthTest {
   kTangentPlane,
 };
 
+/// How the axis pairs of more than two views (ColliderOptions::views 4, 6; beyond the papers)
+/// combine. Each pair whose image holds the point answers as the papers' front/back pair does along
+/// its own axis: depth_k = max(p - front surface, back surface - p) (dressing Eq. 9, walking Eq. 12).
+/// With 2 views every rule is the papers' test.
+enum class ViewRule {
+  /// The default. Inside only when every pair says between its two surfaces (a visual hull:
+  /// depth = the largest depth_k, the surface nearest along any axis); outside as soon as one pair
+  /// says beyond its surfaces or sees nothing (depth = the smallest positive depth_k: the nearest
+  /// surface seen from outside, an upper bound on the distance). A side-facing point 2 mm out, off
+  /// the front/back silhouette, hits through the side pair; a point in a gap that some pair sees
+  /// from outside is not taken for inside.
+  kHull,
+  /// depth = the largest depth_k (intersection): pairs that see nothing make the point a miss.
+  kAllPairs,
+  /// depth = the smallest depth_k (union): everything between any pair's surfaces is inside.
+  kAnyPair,
+};
+
 /// Image-space collider with maps drawn by OpenGL through OSMesa; name() "is-gl".
 /// Static bodies are rendered once in set_body, moving ones again in every update_body
 /// (velocity maps only when body.moving; update_body of a static frame after static maps
@@ -28,7 +46,8 @@ enum class DepthTest {
 ///   hit when the point lies between the two surfaces within tol (depth < tol, DepthTest);
 ///   normal and velocity from the map whose surface is nearer (z beyond the local body centre
 ///   (zf + zb) / 2 takes the front map, the papers' choice by the sign of z).
-/// Side-layer hits (dressing 5.4) report depth >= 0. Depth test kTangentPlane. Throws
+/// Side-layer hits (dressing 5.4) report depth >= 0. Depth test kTangentPlane. With
+/// options.views 4 or 6 the pairs along X and Y answer too, combined by ViewRule::kHull. Throws
 /// std::runtime_error when no GL context can be created or the build lacks CLOTHBENCH_WITH_GL.
 std::unique_ptr<Collider> make_is_gl_collider(const ColliderOptions& options);
 
@@ -40,8 +59,9 @@ std::unique_ptr<Collider> make_is_cpu_collider(const ColliderOptions& options);
 class ImageSpaceCollider final : public Collider {
  public:
   /// `setup_ms`: set-up already spent on the renderer (GL context, shaders) [ms].
+  /// Throws std::invalid_argument for no renderer, max_speed <= 0 or bad views / side_layer_mm.
   ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, const ColliderOptions& options, double setup_ms,
-                     DepthTest test = DepthTest::kTangentPlane);
+                     DepthTest test = DepthTest::kTangentPlane, ViewRule rule = ViewRule::kHull);
   std::string_view name() const override;
   void set_body(const BodyFrame& body) override;
   void update_body(const BodyFrame& body) override;
@@ -58,6 +78,7 @@ class ImageSpaceCollider final : public Collider {
   std::unique_ptr<MapRenderer> renderer_;
   ColliderOptions options_;
   DepthTest test_;
+  ViewRule rule_;
   MapSet maps_;
   int vertex_count_ = 0;
   CollideStats stats_;

@@ -23,6 +23,13 @@ namespace clothbench {
 ///   back:  (size - u, v)                                               (dressing Eq. 8, X_back)
 /// Depth (z-buffer) runs 0 at the near plane to 1 at the far plane:
 ///   front: zbuf = (z_max - z) / (z_max - z_min),  back: zbuf = (z - z_min) / (z_max - z_min).
+///
+/// Beyond the papers, `views` = 4 adds a pair along X (view 2 on the box's +X face looking along
+/// -X, view 3 on the -X face looking along +X; window (u, v) = ((z - z0) / pixel, (y - y0) / pixel))
+/// and `views` = 6 a pair along Y (view 4 above looking down, view 5 below looking up; window
+/// ((x - x0) / pixel, (z - z0) / pixel)): a cube of cameras, same pixel and size, neither mirrored.
+/// View k looks along axis view_axis(k); even views sit on the + face (their map holds the largest
+/// surface coordinate along that axis), odd views on the - face (the smallest).
 struct MapFrame {
   int size = 0;    ///< pixels per side of each square map
   Real x0 = 0;     ///< world x of the map's left edge (front view) [m]
@@ -30,6 +37,10 @@ struct MapFrame {
   Real pixel = 0;  ///< side of one pixel [m] (dressing Eq. 11)
   Real z_min = 0;  ///< back camera's near plane = front camera's far plane [m]
   Real z_max = 0;  ///< front camera's near plane = back camera's far plane [m]
+  int views = 2;   ///< 2 (front, back), 4 (+ along X) or 6 (+ along Y)
+  Real z0 = 0;     ///< world z of the square's edge in the views along X and Y [m]
+  Real x_min = 0, x_max = 0;  ///< near/far planes of the views along X [m]
+  Real y_min = 0, y_max = 0;  ///< near/far planes of the views along Y [m]
 
   /// Continuous front-view column of world x [pixels].
   Real front_u(Real x) const { return (x - x0) / pixel; }
@@ -37,24 +48,41 @@ struct MapFrame {
   Real map_v(Real y) const { return (y - y0) / pixel; }
   /// Distance between the near and far planes [m] (bboxdepth of dressing Eq. 5).
   Real depth_range() const { return z_max - z_min; }
+  /// World axis (0 x, 1 y, 2 z) view k looks along: 2 for views 0-1, 0 for 2-3, 1 for 4-5.
+  static int view_axis(int view) { return view < 2 ? 2 : view < 4 ? 0 : 1; }
+  /// World axes of view k's window columns and rows.
+  static int column_axis(int view) { return view == 2 || view == 3 ? 2 : 0; }
+  static int row_axis(int view) { return view >= 4 ? 2 : 1; }
+  /// World coordinate of the squares' lower edge along `axis` [m].
+  Real origin(int axis) const { return axis == 0 ? x0 : axis == 1 ? y0 : z0; }
+  /// Near/far planes along `axis` [m].
+  Real plane_min(int axis) const { return axis == 0 ? x_min : axis == 1 ? y_min : z_min; }
+  Real plane_max(int axis) const { return axis == 0 ? x_max : axis == 1 ? y_max : z_max; }
 };
 
-/// Column-major clip-from-world matrix of one view (0 front, 1 back) for a viewport of
-/// frame.size^2 pixels: x, y to [-1, 1] over the map's square (back view mirrored in x, dressing
-/// Eq. 8), z to -1 at the view's near plane and +1 at its far plane. Both renderers use it, so
-/// both start from the same float window coordinates.
+/// Column-major clip-from-world matrix of one view (0 front, 1 back, 2-5 the extra views) for a
+/// viewport of frame.size^2 pixels: the view's column and row axes to [-1, 1] over the map's square
+/// (back view mirrored in x, dressing Eq. 8), its depth axis to -1 at its near plane and +1 at its
+/// far plane. Both renderers use it, so both start from the same float window coordinates.
 std::array<float, 16> clip_from_world(const MapFrame& frame, int view);
 
 /// Cameras for a body's bounding box. The square is the papers' (side = box height, bottom on
 /// the box's floor, centred on the box in x; dressing Eq. 8) or, with options.fit_extent, the
 /// box's larger side plus two pixels each way, centred on the box. The near/far planes are the
-/// box's z faces moved out by options.tol so no surface lies on a clipping plane.
-/// Throws std::invalid_argument when options.map_size < 8 or the box is flat.
+/// box's z faces moved out by options.tol so no surface lies on a clipping plane. options.views
+/// 4 and 6 add the cameras along X and Y: same pixel, the square centred on the box in z, planes on
+/// the box's faces moved out by tol. Throws std::invalid_argument when options.map_size < 8, the
+/// box is flat, or options.views / side_layer_mm are invalid (check_view_options).
 MapFrame make_map_frame(const Box3& box, const ColliderOptions& options);
 
-/// Both views' maps, front then back, each `size x size` pixels, row-major, row 0 at the bottom,
-/// columns in the view's own window order (so the back map is mirrored in x, dressing Eq. 8).
-/// Pixel p of view k (0 front, 1 back) is element k * size^2 + row * size + col.
+/// Throws std::invalid_argument unless options.views is 2, 4 or 6 and options.side_layer_mm is a
+/// finite number >= 0 (messages name the allowed values).
+void check_view_options(const ColliderOptions& options);
+
+/// Every view's maps (frame.views of them), front then back then the extra views, each
+/// `size x size` pixels, row-major, row 0 at the bottom, columns in the view's own window order
+/// (so the back map is mirrored in x, dressing Eq. 8). Pixel p of view k (0 front, 1 back) is
+/// element k * size^2 + row * size + col. `z` holds each view's surface coordinate along its axis.
 struct MapSet {
   static constexpr int kFront = 0;
   static constexpr int kBack = 1;
@@ -67,10 +95,10 @@ struct MapSet {
   bool float_maps = true;             ///< float normal/velocity (true) or 8-bit colours (dressing Eq. 6, walking Eq. 9)
   bool has_velocity = false;          ///< velocity maps were rendered (moving bodies only)
   Real max_speed = 3;                 ///< maxv of the 8-bit velocity encoding [m/s] (walking Eq. 9/10)
-  std::vector<float> z;               ///< body surface z [m] (2 x size^2); -inf (front) / +inf (back) where empty
-  std::vector<std::uint8_t> mask;     ///< kEmpty, kBody or kSide (2 x size^2)
-  std::vector<float> normal;          ///< float maps: interpolated normal xyz + 1 (4 x 2 x size^2)
-  std::vector<float> velocity;        ///< float maps with velocity: xyz + 1 [m/s] (4 x 2 x size^2)
+  std::vector<float> z;               ///< body surface z [m] (views x size^2); -inf (even views) / +inf (odd) where empty
+  std::vector<std::uint8_t> mask;     ///< kEmpty, kBody or kSide (views x size^2)
+  std::vector<float> normal;          ///< float maps: interpolated normal xyz + 1 (4 x views x size^2)
+  std::vector<float> velocity;        ///< float maps with velocity: xyz + 1 [m/s] (4 x views x size^2)
   std::vector<std::uint8_t> normal8;  ///< 8-bit maps: RGBA, RGB = 0.5 n + 0.5 (dressing Eq. 6)
   std::vector<std::uint8_t> velocity8;  ///< 8-bit maps: RGBA, RGB = 0.5 v / maxv + 0.5 (walking Eq. 9)
 
@@ -92,15 +120,21 @@ struct MapSet {
 
 /// Adds the silhouette layer of dressing 5.4: every empty pixel with a body pixel among its 8
 /// neighbours takes the depth, normal and velocity of the neighbour nearest to the camera and
-/// becomes kSide. Applied to both views.
-void add_side_layer(MapSet& maps);
+/// becomes kSide. Applied to every view. `rings` > 1 repeats it outwards from the last ring
+/// (a layer `rings` pixels wide, Chebyshev distance), each ring taking its values from the previous.
+void add_side_layer(MapSet& maps, int rings = 1);
+
+/// Rings of the side layer for `options` at `pixel` [m]: 0 without options.side_layer, 1 for
+/// side_layer_mm = 0 (the papers' one pixel), else ceil(side_layer_mm / pixel), at least 1.
+int side_layer_rings(const ColliderOptions& options, Real pixel);
 
 /// Turns maps.z from z-buffer values (0 at the view's near plane, 1 at its far plane; 1 where
-/// nothing was drawn) into body surface z [m] (dressing Eq. 5, tol applied at the query) and sets
-/// the mask to kBody where something was drawn, kEmpty (z = -inf front, +inf back) elsewhere.
+/// nothing was drawn) into the body surface coordinate along each view's axis [m] (dressing Eq. 5,
+/// tol applied at the query) and sets the mask to kBody where something was drawn, kEmpty
+/// (z = -inf for even views, +inf for odd) elsewhere.
 void depth_from_zbuffer(MapSet& maps);
 
-/// Draws both views of a body into a MapSet whose frame and encoding are already set (reset()).
+/// Draws every view of a body into a MapSet whose frame and encoding are already set (reset()).
 class MapRenderer {
  public:
   MapRenderer() = default;
@@ -115,14 +149,14 @@ class MapRenderer {
 };
 
 /// OpenGL via OSMesa (llvmpipe): one off-screen context with its own small client buffer,
-/// an FBO with two colour targets (normal, velocity; RGBA32F or RGBA8) and a depth target,
-/// read back with glReadPixels. Throws std::runtime_error when no context can be created or a
+/// an FBO with two colour targets (normal, velocity; RGBA32F or RGBA8) and a depth target of
+/// size x (views x size), the views stacked upwards, read back with glReadPixels. Throws std::runtime_error when no context can be created or a
 /// shader does not compile, and in builds without CLOTHBENCH_WITH_GL (message naming the option).
 std::unique_ptr<MapRenderer> make_gl_map_renderer();
 
-/// The CPU rasteriser: both views in one pass over the triangles, reproducing llvmpipe (Mesa 22.3):
-/// window coordinates through clip_from_world and the viewport of one size x 2 size target (back
-/// view above the front), vertices snapped to 1/256 pixel, pixel centres sampled with the
+/// The CPU rasteriser: every view in one pass over the triangles, reproducing llvmpipe (Mesa 22.3):
+/// window coordinates through clip_from_world and the viewport of one size x (views x size) target
+/// (back view above the front, the extra views above that), vertices snapped to 1/256 pixel, pixel centres sampled with the
 /// top-left fill rule, and the z-buffer value from llvmpipe's depth plane: set up in float from
 /// the unsnapped vertices in its vertex order, anchored at the window origin, evaluated with fused
 /// multiply-adds where the host has them (as llvmpipe's JIT does). Float attributes, anchored at
@@ -130,7 +164,7 @@ std::unique_ptr<MapRenderer> make_gl_map_renderer();
 std::unique_ptr<MapRenderer> make_cpu_map_renderer();
 
 /// One-shot maps of a body: frame from its bounding box and `options` (map_size, fit_extent,
-/// float_maps, max_speed, side_layer), velocity maps when body.moving. `renderer` is "gl" or
+/// float_maps, max_speed, side_layer, side_layer_mm, views), velocity maps when body.moving. `renderer` is "gl" or
 /// "cpu". Throws std::invalid_argument for another name or a malformed body, std::runtime_error
 /// when GL is asked for and no context can be created or the build lacks CLOTHBENCH_WITH_GL.
 MapSet render_maps(const BodyFrame& body, std::string_view renderer, const ColliderOptions& options);

@@ -59,6 +59,9 @@ struct ColliderOptions {
   Real search_radius = 0.05f;   ///< object space: closest points searched within this [m]
   int map_size = 320;           ///< image space: map resolution [pixels] (dressing 5.4)
   bool side_layer = true;       ///< image space: one extra pixel layer around the silhouette
+  Real side_layer_mm = 0;       ///< image space: > 0 widens that layer to this many millimetres
+                                ///< (at least one pixel), so it does not thin as the map grows
+  int views = 2;                ///< image space: 2 (the papers' front/back), 4 (+ along +-X) or 6 (+ +-Y)
   bool fit_extent = false;      ///< image space: map square fitted to the body, not body height
   bool float_maps = true;       ///< image space: float targets (false: 8-bit colours, Eq. 6/9)
   Real max_speed = 3.0f;        ///< image space, 8-bit velocity encoding: maxv [m/s] (walking Eq. 9)
