@@ -1,9 +1,12 @@
 // stability: where each method fails — time step beyond the Eq. 4 bound, a sphere too fast for the
 // collider (tunnelling), map size against thin body parts, the side layer, tol.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
+#include "clothbench/collide_is/map_set.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "experiment.hpp"
@@ -111,25 +114,40 @@ std::string speed_boundaries(ExperimentContext& ctx) {
 
 // the share of exact contacts a collider misses, per body region: body vertices moved 2 mm out
 // along their normal (all within tol, so all should hit)
+// also: side-facing points (|n_z| < 0.5, the surface seen beyond 60 deg from the front/back axis)
+// and the costs: fastest of kTimings renders [ms] and queries [ns per point]
 struct Misses {
-  double torso = 0, arms = 0, hands = 0, legs = 0;
+  double torso = 0, arms = 0, hands = 0, legs = 0, side = 0;
+  double render_ms = 0, query_ns = 0;
 };
+constexpr int kTimings = 3;
 
 Misses measure_misses(const BodyFrame& body, const std::string& collider, const ColliderOptions& o) {
   auto c = make_collider(collider, o);
-  c->set_body(body);
   const Points3 p = body.positions + 0.002f * body.normals;
   std::vector<Contact> out(static_cast<std::size_t>(p.cols()));
-  c->query(PointsView(p), ContactsOut{out.data(), out.size()});
-  double miss[4] = {}, total[4] = {};
+  Misses m;
+  m.render_ms = m.query_ns = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kTimings; ++k) {
+    const CollideStats before = c->stats();
+    c->set_body(body);
+    c->query(PointsView(p), ContactsOut{out.data(), out.size()});
+    const CollideStats after = c->stats();
+    m.render_ms = std::min(m.render_ms, after.setup_ms - before.setup_ms);
+    m.query_ns = std::min(m.query_ns, 1e6 * (after.query_ms - before.query_ms) / double(p.cols()));
+  }
+  double miss[5] = {}, total[5] = {};
   for (Eigen::Index v = 0; v < p.cols(); ++v) {
     const Real x = std::abs(body.positions(0, v)), y = body.positions(1, v);
     const int region = y < 0.8f ? 3 : x > 0.42f ? 2 : x > 0.2f ? 1 : 0;  // legs, hands, arms, torso
+    const double missed = out[static_cast<std::size_t>(v)].hit ? 0 : 1;
     total[region] += 1;
-    miss[region] += out[static_cast<std::size_t>(v)].hit ? 0 : 1;
+    miss[region] += missed;
+    if (std::abs(body.normals(2, v)) < 0.5f) total[4] += 1, miss[4] += missed;
   }
   const auto pct = [&](int r) { return total[r] > 0 ? 100 * miss[r] / total[r] : 0.0; };
-  return {pct(0), pct(1), pct(2), pct(3)};
+  m.torso = pct(0), m.arms = pct(1), m.hands = pct(2), m.legs = pct(3), m.side = pct(4);
+  return m;
 }
 
 std::string map_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
@@ -169,11 +187,56 @@ std::string map_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
          " % missed)\n\n" + t.str() + "\n![map size](stability-maps.png)\n";
 }
 
+// beyond the papers: more views (pairs along X and Y) and a side layer of fixed width in metres,
+// the same 2 mm points, per map size; render and query costs of is-cpu (the fastest of three)
+std::string view_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
+  const std::vector<std::string> is = ctx.colliders({"is-cpu"});
+  if (is.empty()) return "";
+  const BodyModel model = load_body(kDebianHumanBody);
+  const BodyFrame& body = model.rest();
+  MarkdownTable t({"map size", "views", "side layer", "torso miss %", "arms miss %", "hands miss %", "legs miss %",
+                   "side-facing miss %", "render [ms/frame]", "query [ns/point]"});
+  struct Option {
+    const char* label;
+    int views;
+    Real side_mm;
+  };
+  const Option options[] = {{"2 views", 2, 0}, {"4 views", 4, 0}, {"6 views", 6, 0}, {"2 views, side layer 3 mm", 2, 3}};
+  const std::vector<int> sizes = ctx.quick() ? std::vector<int>{128, 320} : std::vector<int>{64, 128, 256, 320, 512, 1024};
+  for (const Option& opt : options) {
+    std::vector<double> x, y;
+    for (int size : sizes) {
+      ColliderOptions o;
+      o.map_size = size;
+      o.views = opt.views;
+      o.side_layer_mm = opt.side_mm;
+      const Misses m = measure_misses(body, is[0], o);
+      const std::string layer = opt.side_mm > 0 ? num(opt.side_mm, 0) + " mm (" +
+                                                      std::to_string(side_layer_rings(o, make_map_frame(
+                                                          bounding_box(body.positions), o).pixel)) + " px)"
+                                                : "1 px";
+      t.row({std::to_string(size), std::to_string(opt.views), layer, num(m.torso, 2), num(m.arms, 2), num(m.hands, 2),
+             num(m.legs, 2), num(m.side, 2), num(m.render_ms, 2), num(m.query_ns, 0)});
+      x.push_back(size);
+      y.push_back(m.side);
+    }
+    series.push_back({{"label", opt.label}, {"x", x}, {"y", y}});
+  }
+  return "\n### Views and side-layer width against thin parts (beyond the papers; " + is[0] +
+         ", the same 2 mm points; `collider.views` 4 adds the pair of cameras along X, 6 also along Y, combined "
+         "by the hull rule of collide_is/README.md; `collider.side_layer_mm` widens the side layer to that many "
+         "millimetres, at least one pixel; side-facing: |n_z| < 0.5; render: set-up of the maps of one frame, "
+         "query: the 2 mm points, fastest of " + std::to_string(kTimings) + ")\n\n" + t.str() +
+         "\n![views](stability-views.png)\n";
+}
+
 void stability(ExperimentContext& ctx) {
   nlohmann::json dt_series = nlohmann::json::array(), map_series = nlohmann::json::array();
   std::string body = dt_boundaries(ctx, dt_series);
   body += speed_boundaries(ctx);
   body += map_boundaries(ctx, map_series);
+  nlohmann::json view_series = nlohmann::json::array();
+  body += view_boundaries(ctx, view_series);
   ctx.chart("stability-dt", {{"title", "Divergence vs time step (tablecloth on a sphere)"},
                              {"xlabel", "dt / Eq. 4 bound"},
                              {"ylabel", "diverged (1) or not (0)"},
@@ -184,6 +247,12 @@ void stability(ExperimentContext& ctx) {
                                  {"ylabel", "missed contacts [%]"},
                                  {"logx", true},
                                  {"series", map_series}});
+  if (!view_series.empty())
+    ctx.chart("stability-views", {{"title", "Side-facing missed contacts vs map size, per view count and side layer"},
+                                  {"xlabel", "map size [pixels]"},
+                                  {"ylabel", "side-facing contacts missed [%]"},
+                                  {"logx", true},
+                                  {"series", view_series}});
   ctx.write("stability", "Where each method fails",
             "Boundaries of stable, accurate operation. Stated limits: a run fails when it diverges, ends with more than " +
                 num(kInsideLimitPct, 0) + " % of its points inside the body, or ends with more than " +

@@ -234,6 +234,11 @@ void read_collider(Section s, Scene& scene) {
   s.number("search_radius", o.search_radius, 1e-4, 10);
   s.number("map_size", o.map_size, 16, 8192);
   s.flag("side_layer", o.side_layer);
+  s.number("side_layer_mm", o.side_layer_mm, 0, 1000);
+  s.number("views", o.views, 0, 1e6);
+  if (o.views != 2 && o.views != 4 && o.views != 6)
+    s.fail(*s.find("views"), "views", "must be 2 (front/back), 4 (+ left/right) or 6 (+ top/bottom), got " +
+                                          std::to_string(o.views));
   s.flag("fit_extent", o.fit_extent);
   s.flag("float_maps", o.float_maps);
   s.number("max_speed", o.max_speed, 1e-3, 1e3);
@@ -401,7 +406,7 @@ std::string collider_config(const Scene& s) {
   w("name", s.collider)("dress_with", s.dress_with)("tol", double(o.tol))("search_radius", double(o.search_radius));
   w("map_size", o.map_size)("side_layer", o.side_layer)("fit_extent", o.fit_extent)("float_maps", o.float_maps);
   w("max_speed", double(o.max_speed))("threads", o.threads)("coherent", o.coherent);
-  w("voxel_size", double(o.voxel_size));
+  w("voxel_size", double(o.voxel_size))("views", o.views)("side_layer_mm", double(o.side_layer_mm));
   return w.str();
 }
 

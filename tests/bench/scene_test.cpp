@@ -134,12 +134,32 @@ TEST(Scene, ConfigHashFollowsTheEffectiveConfiguration) {
   // any field of any section changes it
   for (const char* set : {"body.fps=30", "garment.vertices=401", "material.density=0.2", "solver.threshold=0.06",
                           "solver.face_queries=true", "collider.name=brute", "collider.map_size=512",
-                          "stop.drape_max_s=0.5", "stop.max_iterations=10"})
+                          "collider.views=4", "collider.side_layer_mm=3", "stop.drape_max_s=0.5",
+                          "stop.max_iterations=10"})
     EXPECT_NE(config_hash(parse_scene(text, "s.toml", {set})), hash) << set;
   Scene with_collider = base;
   with_collider.collider = "embree";  // `run --collider` after loading
   EXPECT_NE(config_hash(with_collider), hash);
   EXPECT_NE(config_text(base).find("garment.vertices = 400\n"), std::string::npos) << config_text(base);
+}
+
+// image space beyond the papers: views 2, 4 or 6 only, the side layer's width in millimetres
+TEST(Scene, ColliderViewsAndSideLayerWidth) {
+  const Scene s = parse_scene("[collider]\nviews = 6\nside_layer_mm = 3\n", "s.toml");
+  EXPECT_EQ(s.collider_options.views, 6);
+  EXPECT_FLOAT_EQ(s.collider_options.side_layer_mm, 3.0f);
+  EXPECT_EQ(parse_scene("", "s.toml").collider_options.views, 2);
+  EXPECT_NE(config_text(s).find("collider.views = 6\n"), std::string::npos) << config_text(s);
+  for (const char* bad : {"3", "1", "8", "0"}) {
+    const std::string e = error_of(std::string("[collider]\nviews = ") + bad + "\n");
+    EXPECT_NE(e.find("s.toml:2"), std::string::npos) << e;
+    EXPECT_NE(e.find("collider.views"), std::string::npos) << e;
+    EXPECT_NE(e.find("2 (front/back), 4 (+ left/right) or 6 (+ top/bottom), got " + std::string(bad)),
+              std::string::npos)
+        << e;
+  }
+  EXPECT_NE(error_of("", {"collider.views=3"}).find("collider.views (from --set): must be 2"), std::string::npos);
+  EXPECT_NE(error_of("[collider]\nside_layer_mm = -1\n").find("collider.side_layer_mm"), std::string::npos);
 }
 
 TEST(Scene, MissingFileAndPathResolution) {
