@@ -85,6 +85,9 @@ struct PairAnswer {
   Real depth = 0;   // max(p - front surface, back surface - p) along the pair's axis [m]; +inf empty
   int view = 0;     // the view whose surface is nearer
   int col = 0, row = 0;  // the pixel (unmirrored window column and row)
+  bool side = false;     // a side-layer pixel: the tolerance band outside the silhouette (dressing 5.4)
+  // seen from outside: beyond the pair's surfaces, nothing drawn, or the side layer
+  bool outside() const { return depth > 0 || side; }
 };
 
 // dressing Eq. 5/9, walking Eq. 11/12 along the pair's axis; false when p is outside its image
@@ -102,6 +105,7 @@ bool pair_answer(const MapSet& m, int pair, const Vec3& p, PairAnswer& a) {
   a.depth = std::max(d_front, d_back);
   // the nearer surface's map answers (beyond the local body centre: the front map)
   a.view = d_front >= d_back ? front : front + 1;
+  a.side = m.mask[fi] == MapSet::kSide;
   return true;
 }
 
@@ -109,10 +113,11 @@ bool pair_answer(const MapSet& m, int pair, const Vec3& p, PairAnswer& a) {
 bool replaces(ViewRule rule, const PairAnswer& a, const PairAnswer& b) {
   if (rule == ViewRule::kAllPairs) return b.depth > a.depth;
   if (rule == ViewRule::kAnyPair) return b.depth < a.depth;
-  // kHull: a pair that sees the point outside its surfaces wins (the nearest such); inside every
-  // pair, the pair whose surface is nearest along its axis
-  if (a.depth > 0) return b.depth > 0 && b.depth < a.depth;
-  return b.depth > 0 || b.depth > a.depth;
+  // kHull: a pair that sees the point from outside wins (the nearest such; a side-layer pixel
+  // counts as depth 0, as its hits report); inside every pair, the pair whose surface is nearest
+  // along its axis
+  if (a.outside()) return b.outside() && std::max(b.depth, 0.0f) < std::max(a.depth, 0.0f);
+  return b.outside() || b.depth > a.depth;
 }
 
 // the answering pair of views at p; false when no pair's image holds p
