@@ -10,6 +10,8 @@ PACKAGES := cmake g++ make pkg-config libeigen3-dev libfcl-dev libembree-dev lib
             libopenvdb-dev libboost-iostreams-dev valgrind
 # what only `make reproduce` needs (CI's `make test` stays lean): ffmpeg for the walking video
 REPRODUCE_PACKAGES := ffmpeg
+# the one-node Slurm cluster of `make test`'s cluster test (tools/slurm-local), without recommends
+CLUSTER_PACKAGES := slurmctld slurmd slurm-client munge
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 CTEST_FLAGS ?= --output-on-failure -LE 'slow|benchmark'
 
@@ -23,6 +25,7 @@ quick: build
 	$(BUILD)/bin/clothbench reproduce --quick --out $(BUILD)/results-quick
 
 test: build
+	$(MAKE) deps PACKAGES="$(CLUSTER_PACKAGES)" APT_FLAGS=--no-install-recommends
 	cd $(BUILD) && ctest $(CTEST_FLAGS) -j$(JOBS)
 
 # the CI performance gate's baseline: instruction counts of perf/'s workloads under callgrind, rewritten
@@ -65,7 +68,7 @@ deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
 	  echo "installing:$$missing"; \
-	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(APT_FLAGS) $$missing; \
 	fi
 
 configure: deps

@@ -1,7 +1,7 @@
 #pragma once
 /// The CLI of DESIGN.md: one file per subcommand (cmd_<name>.cpp), each adding itself to the app.
 /// A command's action runs after parsing and returns the exit code (0 ok, 1 regression, 2 bad input,
-/// 3 diverged, 4 accuracy limits missed under `run --strict`).
+/// 3 diverged, 4 accuracy limits missed under `run --strict`, 5 sweep points failed or missing).
 #include <functional>
 
 #include <CLI/CLI.hpp>
@@ -18,5 +18,6 @@ void add_body_command(CLI::App& app, Action& action);
 void add_run_command(CLI::App& app, Action& action);
 void add_reproduce_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
+void add_sweep_command(CLI::App& app, Action& action);  // and merge
 
 }  // namespace clothbench::cli

@@ -300,6 +300,36 @@ TEST_F(Cli, RunWithRepetitionsWritesEveryRunAndTheAggregates) {
   EXPECT_NE(read(log).find("among 1 judged row(s)"), std::string::npos) << read(log);
 }
 
+// a sweep in shards: every point exactly once over the shards, a failing point reported with its error and
+// exit status and the others kept, a re-run skipping what is done, merge joining the shards' folder
+TEST_F(Cli, SweepShardsKeepTheGoodPointsAndReportTheFailedOne) {
+  if (!fs::exists(clothbench::kDebianHumanBody)) GTEST_SKIP() << clothbench::kDebianHumanBody << " missing";
+  const std::string out = (dir_ / "sweep").string(), log = (dir_ / "log").string();
+  const std::string grid = "sweep " + kScenes + "dressing/skirt.toml --collider is-cpu --set garment.vertices=100,-5,120 "
+                           "--set stop.max_iterations=5 --out " + out;
+  EXPECT_EQ(clothbench(grid + " --shard 0/2 --jobs 1", log), 0) << read(log);  // points 0 and 2: fine
+  EXPECT_EQ(clothbench(grid + " --shard 1/2 --jobs 1", log), 5) << read(log);  // point 1: vertices = -5
+  EXPECT_TRUE(fs::exists(dir_ / "sweep/points/0.json"));
+  EXPECT_TRUE(fs::exists(dir_ / "sweep/points/1.error.json"));
+  EXPECT_TRUE(fs::exists(dir_ / "sweep/points/2.json"));
+  const std::string merged = (dir_ / "merged.json").string();
+  EXPECT_EQ(clothbench("merge " + out + " --out " + merged, log), 5) << read(log);
+  EXPECT_NE(read(log).find("FAILED is-cpu/garment.vertices=-5/stop.max_iterations=5 (point 1"), std::string::npos)
+      << read(log);
+  EXPECT_NE(read(log).find("exit status 2)"), std::string::npos) << read(log);
+  const auto doc = nlohmann::json::parse(read(merged));
+  EXPECT_EQ(doc["benchmarks"].size(), 2u);
+  ASSERT_EQ(doc["failed"].size(), 1u);
+  EXPECT_EQ(doc["failed"][0]["index"], 1);
+  // done points are not run again; a folder of another grid is refused
+  EXPECT_EQ(clothbench(grid + " --shard 0/2", log), 0) << read(log);
+  EXPECT_NE(read(log).find("shard 0/2: 0 to run"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench(grid + " --shard 1/2", log), 5) << read(log);  // a failed point is tried again
+  EXPECT_NE(read(log).find("shard 1/2: 1 to run"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench("sweep " + kScenes + "dressing/skirt.toml --out " + out, log), 2) << read(log);
+  EXPECT_NE(read(log).find("holds another sweep"), std::string::npos) << read(log);
+}
+
 // the verdict against the accuracy limits: in the summary (never "converged yes" alone), in the
 // JSON, and as exit code 4 under --strict
 TEST_F(Cli, RunPrintsTheAccuracyVerdictAndStrictExitsFourWhenTheLimitsAreMissed) {
