@@ -52,14 +52,11 @@ Claim iterations_claim(ExperimentContext& ctx) {
   // per garment: the fewest sewing iterations of a run that sewed, image space against object space
   std::map<std::string, std::pair<long, long>> best;  // garment -> (IS, OS)
   for (const auto& [name, r] : rows) {
-    // dressing-t1/GARMENT/COLLIDER[/REGIME]: image space against object space within one regime
-    std::vector<std::string> part;
-    for (std::size_t at = 0, next; at <= name.size(); at = next + 1) {
-      next = std::min(name.find('/', at), name.size());
-      part.push_back(name.substr(at, next - at));
-    }
-    if (part.size() < 3) continue;
-    const std::string garment = part[1] + (part.size() > 3 ? " (" + part[3] + ")" : ""), collider = part[2];
+    // image space against object space within one garment and regime (the rows' own fields)
+    if (!r.contains("scene") || !r.contains("collider")) continue;
+    const std::string regime = r.value("regime", "stable");
+    const std::string garment = r["scene"].get<std::string>() + (regime == "stable" ? "" : " (" + regime + ")");
+    const std::string collider = r["collider"];
     const bool sewn = r.value("sewn", 0) == 1;
     c.numbers +=
         garment + "/" + collider + " " + (sewn ? std::to_string(r["sew_iterations"].get<long>()) : "not sewn") + "; ";

@@ -150,6 +150,8 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"cdr_ms", r.cdr_ms_per_iteration()},
                      {"cs_ms", r.cs_ms_per_iteration()},
                      {"limit_ms", r.limit_ms_per_iteration()},
+                     {"scene", r.scene},
+                     {"collider", r.collider},
                      {"integrator", r.integrator},
                      {"regime", r.regime},
                      {"dt_ms", 1e3 * r.dt_s},

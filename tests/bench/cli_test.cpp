@@ -88,7 +88,7 @@ TEST_F(Cli, RunWritesTheResultFields) {
   const auto doc = nlohmann::json::parse(read(json));
   ASSERT_EQ(doc["benchmarks"].size(), 1u);
   const auto& row = doc["benchmarks"][0];
-  for (const char* key : {"name", "iterations", "real_time", "time_unit", "vertices", "query_points", "total_s",
+  for (const char* key : {"name", "scene", "collider", "regime", "iterations", "real_time", "time_unit", "vertices", "query_points", "total_s",
                           "cdr_ms", "cs_ms", "frames", "fps", "inside_pct", "depth_max_mm", "depth_p95_mm",
                           "strain_max", "strain_p99", "converged", "diverged"})
     EXPECT_TRUE(row.contains(key)) << key;
