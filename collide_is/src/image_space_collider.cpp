@@ -113,10 +113,11 @@ bool pair_answer(const MapSet& m, int pair, const Vec3& p, PairAnswer& a) {
 bool replaces(ViewRule rule, const PairAnswer& a, const PairAnswer& b) {
   if (rule == ViewRule::kAllPairs) return b.depth > a.depth;
   if (rule == ViewRule::kAnyPair) return b.depth < a.depth;
-  // kHull: a pair that sees the point from outside wins (the nearest such; a side-layer pixel
-  // counts as depth 0, as its hits report); inside every pair, the pair whose surface is nearest
-  // along its axis
-  if (a.outside()) return b.outside() && std::max(b.depth, 0.0f) < std::max(a.depth, 0.0f);
+  // kHull: a pair that sees the point from outside wins: the nearest surface beyond which it lies,
+  // else a side-layer answer (a guess of one pixel, not a bound), else a pair that sees nothing;
+  // inside every pair, the pair whose surface is nearest along its axis
+  const auto key = [](const PairAnswer& x) { return x.side ? 1e30f : x.depth; };
+  if (a.outside()) return b.outside() && key(b) < key(a);
   return b.outside() || b.depth > a.depth;
 }
 

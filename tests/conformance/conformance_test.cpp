@@ -7,6 +7,7 @@
 // here: their looser, resolution-dependent tolerance test lives in tests/collide_is.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -14,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "clothbench/collide_is/image_space_collider.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/brute_collider.hpp"
@@ -146,6 +148,61 @@ TEST_P(Conformance, AgreesWithBrute) {
   EXPECT_LE(Q::quantile(d.velocity_errors, 0.99), tol.velocity_p99);
   EXPECT_EQ(collider->stats().points, c->points.cols());
   EXPECT_EQ(collider->stats().degenerate, 0);
+}
+
+// Image space: hit/no-hit agreement with brute per facing of the closest surface (front n_z >= 0.5,
+// back n_z <= -0.5, side otherwise; points farther than 5 cm: far), per view count (2, 4, 6;
+// ColliderOptions::views) and, for 6 views, per ViewRule. Side-facing agreement must improve with
+// more views: the front/back pair sees those surfaces edge-on.
+struct FacingAgreement {
+  double agree[4] = {}, total[4] = {};  // front, back, side, far
+  double share(int k) const { return total[k] > 0 ? agree[k] / total[k] : 1.0; }
+};
+
+FacingAgreement facing_agreement(const Case& c, int views, ViewRule rule) {
+  ColliderOptions wide;
+  wide.tol = 0.05f;  // brute with a 5 cm tol: the closest surface's normal of every point near the body
+  BruteForceCollider near(wide);
+  near.set_body(c.body);
+  std::vector<Contact> closest(c.reference.size()), got(c.reference.size());
+  near.query(c.points, {closest.data(), closest.size()});
+  ColliderOptions o;
+  o.views = views;
+  ImageSpaceCollider is(make_cpu_map_renderer(), o, 0.0, DepthTest::kTangentPlane, rule);
+  is.set_body(c.body);
+  is.query(c.points, {got.data(), got.size()});
+  FacingAgreement f;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const Real nz = closest[i].normal.z();
+    const int k = !closest[i].hit ? 3 : nz >= 0.5f ? 0 : nz <= -0.5f ? 1 : 2;
+    f.total[k] += 1;
+    f.agree[k] += got[i].hit == c.reference[i].hit;
+  }
+  return f;
+}
+
+TEST(ImageSpaceConformance, SideFacingAgreementImprovesWithViews) {
+  for (const char* name : {"sphere", "capsule", "body_rest"}) {
+    const auto& c = get_case(name);
+    if (!c) continue;
+    double side[7] = {};
+    for (int views : {2, 4, 6}) {
+      const FacingAgreement f = facing_agreement(*c, views, ViewRule::kHull);
+      side[views] = f.share(2);
+      std::printf("[ is-cpu ] %s, %d views: hit/no-hit agreement front %.2f %% of %.0f, back %.2f %% of %.0f, "
+                  "side %.2f %% of %.0f, far %.2f %% of %.0f\n",
+                  name, views, 100 * f.share(0), f.total[0], 100 * f.share(1), f.total[1], 100 * f.share(2),
+                  f.total[2], 100 * f.share(3), f.total[3]);
+    }
+    for (ViewRule rule : {ViewRule::kAllPairs, ViewRule::kAnyPair}) {
+      const FacingAgreement f = facing_agreement(*c, 6, rule);
+      std::printf("[ is-cpu ] %s, 6 views, rule %s: front %.2f %%, back %.2f %%, side %.2f %%, far %.2f %%\n", name,
+                  rule == ViewRule::kAllPairs ? "all pairs (max)" : "any pair (min)", 100 * f.share(0),
+                  100 * f.share(1), 100 * f.share(2), 100 * f.share(3));
+    }
+    EXPECT_GT(side[4], side[2]) << name;
+    EXPECT_GT(side[6], side[2]) << name;
+  }
 }
 
 std::string param_name(const ::testing::TestParamInfo<Param>& info) {

@@ -27,9 +27,9 @@ enum class DepthTest {
 enum class ViewRule {
   /// The default. Inside only when every pair says between its two surfaces (a visual hull:
   /// depth = the largest depth_k, the surface nearest along any axis); outside as soon as one pair
-  /// says beyond its surfaces, sees nothing or answers from its side layer (depth = the smallest
-  /// such depth_k, side-layer answers counted as 0: the nearest surface seen from outside, an
-  /// upper bound on the distance). A side-facing point 2 mm out, off
+  /// says beyond its surfaces, sees nothing or answers from its side layer: the smallest positive
+  /// depth_k of a body pixel answers (the nearest surface seen from outside, an upper bound on the
+  /// distance), else a side-layer answer (a one-pixel guess, not a bound), else a miss. A side-facing point 2 mm out, off
   /// the front/back silhouette, hits through the side pair; a point in a gap that some pair sees
   /// from outside is not taken for inside.
   kHull,
