@@ -21,6 +21,7 @@ struct ReproduceArgs {
   std::string out = "results";
   bool quick = false;
   int repetitions = 1;
+  int jobs = 1;
 };
 
 // results/README.md's last section: each experiment's run against its previous one in history.jsonl, and
@@ -101,7 +102,7 @@ int reproduce(const ReproduceArgs& a) {
     for (const auto& e : experiments()) found = found || e.id == id;
     if (!found) throw InputError("--only: unknown experiment '" + id + "' (known: " + known + ")");
   }
-  ExperimentContext ctx(a.out, a.quick, a.repetitions);
+  ExperimentContext ctx(a.out, a.quick, a.repetitions, a.jobs);
   // fail early on an unwritable output folder
   write_text_file(ctx.path(".write-test"), "");
   std::remove(ctx.path(".write-test").c_str());
@@ -128,6 +129,10 @@ void add_reproduce_command(CLI::App& app, Action& action) {
   cmd->add_option("--out", args->out, "output folder")->capture_default_str();
   cmd->add_flag("--quick", args->quick, "fewer iterations and sizes, same code paths (smoke test)");
   cmd->add_option("--repetitions", args->repetitions, "runs per configuration: tables show the median run; the JSON has every run's row and the aggregates (mean, median, stddev, cv)")->check(CLI::Range(1, 100));
+  cmd->add_option("--jobs", args->jobs,
+                  "worker processes for the grids of pareto and minimal (default 1: every run in this process, "
+                  "the timings of results/); more run faster and measure under shared cores")
+      ->check(CLI::Range(1, 256));
   cmd->callback([&action, args] { action = [args] { return reproduce(*args); }; });
 }
 

@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <deque>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -59,33 +58,21 @@ void record_exit(const std::string& dir, const SweepPoint& p, int status) {
 
 // runs the points in at most `jobs` child processes at once, with progress; returns how many failed
 int run_pool(const SweepGrid& grid, const std::vector<SweepPoint>& points, int jobs, const std::string& dir) {
-  std::deque<SweepPoint> queue(points.begin(), points.end());
-  std::map<pid_t, SweepPoint> running;
   int done = 0, failed = 0;
   Stopwatch clock;
-  while (!queue.empty() || !running.empty()) {
-    while (!queue.empty() && static_cast<int>(running.size()) < jobs) {
-      std::fflush(nullptr);
-      const pid_t pid = fork();
-      if (pid < 0) throw std::runtime_error("sweep: fork failed");
-      if (pid == 0) _exit(child_runs(grid, queue.front(), dir));
-      running.emplace(pid, queue.front());
-      queue.pop_front();
-    }
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;
-    record_exit(dir, it->second, status);
-    const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    failed += !ok;
-    ++done;
-    const double s = clock.ms() / 1e3;
-    std::cerr << "[sweep] " << done << " of " << points.size() << " points done" << (failed ? " (" + std::to_string(failed) + " failed)" : "")
-              << ", " << num(s, 1) << " s, ETA " << num(s / done * double(points.size() - std::size_t(done)), 1)
-              << " s" << (ok ? "" : "; failed: " + it->second.name) << "\n";
-    running.erase(it);
-  }
+  run_children(
+      points.size(), jobs, [&](std::size_t k) { return child_runs(grid, points[k], dir); },
+      [&](std::size_t k, int status) {
+        record_exit(dir, points[k], status);
+        const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        failed += !ok;
+        ++done;
+        const double s = clock.ms() / 1e3;
+        std::cerr << "[sweep] " << done << " of " << points.size() << " points done"
+                  << (failed ? " (" + std::to_string(failed) + " failed)" : "") << ", " << num(s, 1) << " s, ETA "
+                  << num(s / done * double(points.size() - std::size_t(done)), 1) << " s"
+                  << (ok ? "" : "; failed: " + points[k].name) << "\n";
+      });
   return failed;
 }
 

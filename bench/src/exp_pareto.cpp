@@ -79,6 +79,10 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g) {
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (const char* tol : {"0.0025", "0.01"})
       configs.push_back({is, is + " 320 px tol " + std::string(tol), {std::string("collider.tol=") + tol}});
+  // more views than the papers' two (issue 26): the cube of six, and four (front/back, left/right)
+  for (const auto& is : ctx.colliders({"is-cpu"}))
+    for (const char* views : {"4", "6"})
+      configs.push_back({is, is + " 320 px " + std::string(views) + " views", {std::string("collider.views=") + views}});
   for (const auto& is : ctx.colliders({"is-gl"})) configs.push_back({is, is + " 320 px", {}});
   for (const auto& os : ctx.colliders({"embree"})) configs.push_back({os, os, {}});
   for (const auto& os : ctx.colliders({"fcl"})) configs.push_back({os, os, {}});
@@ -86,6 +90,10 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g) {
   for (const auto& os : ctx.colliders({"vdb"}))
     for (const char* voxel : {"0.004", "0.002"})
       configs.push_back({os, os + " voxel " + std::string(voxel), {std::string("collider.voxel_size=") + voxel}});
+  std::vector<ExperimentContext::Request> requests;
+  for (const auto& c : configs)
+    for (int n : g.sizes) requests.push_back({g.scene, c.collider, sets_for(ctx, n, c.sets)});
+  ctx.prefetch(requests);  // reproduce --jobs N: the grid in N worker processes
   std::vector<Point> pts;
   for (const auto& c : configs)
     for (int n : g.sizes) {
@@ -141,8 +149,9 @@ void pareto(ExperimentContext& ctx) {
           "springs whose segment passes through a body triangle, the papers' holes, as % of the structural springs) "
           "for each garment x collider x resolution x map size x tol. Front = not beaten by another configuration "
           "that is at least as good on every axis named and better on one: all = time, inside, depth p95 and "
-          "crossings; the charts draw the front of time and the one accuracy axis they show. FCL runs only at the "
-          "smallest resolution (the reproduce budget).\n\n";
+          "crossings; the charts draw the front of time and the one accuracy axis they show. Every collider runs "
+          "at every resolution; is-cpu also with 4 and 6 views (`collider.views`: front/back plus left/right, and "
+          "top/bottom: issue 26), which the papers did not have.\n\n";
   for (const auto& g : kGarments) {
     const std::vector<Point> pts = garment_points(ctx, g);
     MarkdownTable t({"configuration", "vertices", "total [s]", "inside [%]", "depth p95 [mm]", "crossings [%]",
@@ -182,9 +191,14 @@ void minimal(ExperimentContext& ctx) {
   struct Setup {
     std::string collider;
     bool faces;
+    int views = 2;  // image space: the papers' front/back, or the cube of six (issue 26)
+    std::string label() const {
+      return collider + (views != 2 ? "+" + std::to_string(views) + "views" : "") + (faces ? "+faces" : "");
+    }
   };
   std::vector<Setup> setups;
-  for (const auto& c : ctx.colliders({"is-cpu"})) setups.push_back({c, false}), setups.push_back({c, true});
+  for (const auto& c : ctx.colliders({"is-cpu"}))
+    setups.push_back({c, false}), setups.push_back({c, true}), setups.push_back({c, false, 6});
   for (const auto& c : ctx.colliders({"embree", "vdb", "bbtree"})) setups.push_back({c, false});
   for (const auto& l : ladders)
     for (const auto& s : setups) {
@@ -192,8 +206,9 @@ void minimal(ExperimentContext& ctx) {
       for (int n : ctx.quick() ? std::vector<int>{l.sizes.front()} : l.sizes) {
         const RunResult& r =
             ctx.run(l.scene, s.collider,
-                    sets_for(ctx, n, {s.faces ? "solver.face_queries=true" : "solver.face_queries=false"}));
-        ctx.add_run(r, std::string("minimal/") + l.name + "/" + s.collider + (s.faces ? "+faces/" : "/") + std::to_string(n),
+                    sets_for(ctx, n, {s.faces ? "solver.face_queries=true" : "solver.face_queries=false",
+                                      "collider.views=" + std::to_string(s.views)}));
+        ctx.add_run(r, std::string("minimal/") + l.name + "/" + s.label() + "/" + std::to_string(n),
                     {{"meets_limits", meets(r) ? 1 : 0}});
         if (!meets(r)) continue;
         found = std::to_string(r.vertices);
@@ -202,7 +217,8 @@ void minimal(ExperimentContext& ctx) {
         gap = num(r.seam_gap_max_mm, 1);
         break;
       }
-      t.row({l.name, s.collider, s.faces ? "yes" : "no", found, inside, crossings, gap, l.paper});
+      t.row({l.name, s.collider + (s.views != 2 ? " (" + std::to_string(s.views) + " views)" : ""),
+             s.faces ? "yes" : "no", found, inside, crossings, gap, l.paper});
     }
   ctx.write("minimal", "The smallest model each garment needs",
             "For each garment and collider, the smallest vertex count (from a fixed ladder) whose sew + drape "

@@ -5,12 +5,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "clothbench/config.h"
 #include "clothbench/io/errors.hpp"
 #include "history.hpp"
+#include "run_result_json.hpp"
+#include "sweep.hpp"
 #include "registry.hpp"
 #include "report.hpp"
 
@@ -45,22 +48,73 @@ void linear_fit(const std::vector<double>& x, const std::vector<double>& y, doub
   r2 = ss_tot > 0 ? 1 - ss_res / ss_tot : 1;
 }
 
-ExperimentContext::ExperimentContext(std::string out_dir, bool quick, int repetitions)
-    : out_dir_(std::move(out_dir)), quick_(quick), repetitions_(std::max(1, repetitions)) {}
+ExperimentContext::ExperimentContext(std::string out_dir, bool quick, int repetitions, int jobs)
+    : out_dir_(std::move(out_dir)), quick_(quick), repetitions_(std::max(1, repetitions)), jobs_(std::max(1, jobs)) {}
+
+namespace {
+
+std::string cache_key(const std::string& scene, const std::string& collider, const std::vector<std::string>& sets) {
+  std::string key = scene + "|" + collider;
+  for (const auto& s : sets) key += "|" + s;
+  return key;
+}
+
+Scene scene_for(const std::string& scene, const std::string& collider, const std::vector<std::string>& sets) {
+  Scene loaded = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene, sets);
+  loaded.collider = collider;
+  return loaded;
+}
+
+}  // namespace
+
+void ExperimentContext::prefetch(const std::vector<Request>& requests) {
+  if (jobs_ <= 1) return;
+  std::vector<Request> todo;
+  for (const Request& q : requests)
+    if (!cache_.count(cache_key(q.scene, q.collider, q.sets))) todo.push_back(q);
+  const std::string dir = folder(".prefetch");
+  const auto file = [&](std::size_t k) { return dir + "/" + std::to_string(k) + ".json"; };
+  std::cerr << "  prefetching " << todo.size() << " runs in " << jobs_ << " worker processes\n";
+  std::size_t done = 0;
+  run_children(
+      todo.size(), jobs_,
+      [&](std::size_t k) {
+        try {
+          const Scene s = scene_for(todo[k].scene, todo[k].collider, todo[k].sets);
+          nlohmann::json runs = nlohmann::json::array();
+          RunOptions o;
+          o.progress = false;
+          for (int r = 0; r < repetitions_; ++r) runs.push_back(to_json(run_scene(s, o)));
+          write_text_file(file(k), runs.dump());
+          return 0;
+        } catch (const std::exception&) {
+          return 2;  // run() meets the error again and reports it
+        }
+      },
+      [&](std::size_t k, int) {
+        std::ifstream in(file(k));
+        const auto runs = nlohmann::json::parse(in, nullptr, false);
+        if (runs.is_array()) {
+          std::vector<RunResult> results;
+          for (const auto& j : runs) results.push_back(run_result_from_json(j));
+          cache_.emplace(cache_key(todo[k].scene, todo[k].collider, todo[k].sets), std::move(results));
+        }
+        std::filesystem::remove(file(k));
+        std::cerr << "  prefetched " << ++done << " of " << todo.size() << "\n";
+      });
+  std::filesystem::remove(dir);
+}
 
 const RunResult& ExperimentContext::run(const std::string& scene, const std::string& collider,
                                         const std::vector<std::string>& sets, const RunOptions& options) {
-  std::string key = scene + "|" + collider;
-  for (const auto& s : sets) key += "|" + s;
+  const std::string key = cache_key(scene, collider, sets);
   auto it = cache_.find(key);
   if (it == cache_.end()) {
-    const Scene loaded = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene, sets);
-    Scene with = loaded;
-    with.collider = collider;
+    const Scene with = scene_for(scene, collider, sets);
     std::vector<RunResult> runs;
     for (int r = 0; r < repetitions_; ++r) {
       RunOptions o = options;
-      if (o.label.empty()) o.label = loaded.name + "/" + collider;
+      if (o.label.empty()) o.label = with.name + "/" + collider;
       std::cerr << "  running " << o.label << (repetitions_ > 1 ? " #" + std::to_string(r + 1) : "") << "\n";
       runs.push_back(run_scene(with, o));
     }

@@ -36,7 +36,19 @@ inline std::string regime_suffix(const std::string& regime, const std::string& s
 /// What an experiment may use: cached scene runs, output writers, the options of the command.
 class ExperimentContext {
  public:
-  ExperimentContext(std::string out_dir, bool quick, int repetitions);
+  ExperimentContext(std::string out_dir, bool quick, int repetitions, int jobs = 1);
+
+  /// One run() request.
+  struct Request {
+    std::string scene, collider;
+    std::vector<std::string> sets;
+  };
+  /// With jobs > 1, runs the requests not yet cached in up to `jobs` worker processes (forked, one per
+  /// request, its repetitions inside) and caches what they measured, so that run() answers them at once;
+  /// with jobs = 1 it does nothing (run() runs them as asked). Prefetched results have no end-state
+  /// geometry (final_body, mesh are empty): for grids whose rows need none. A request that fails in its
+  /// worker stays uncached, and run() then reports its error as usual.
+  void prefetch(const std::vector<Request>& requests);
 
   /// Runs scenes/SCENE (relative to the source tree's scenes/) with a collider and overrides;
   /// identical requests in one `reproduce` share one run. With repetitions > 1 the run is
@@ -68,6 +80,7 @@ class ExperimentContext {
   std::string out_dir_;
   bool quick_;
   int repetitions_;
+  int jobs_;
   std::map<std::string, std::vector<RunResult>> cache_;
   nlohmann::json rows_ = nlohmann::json::array();
 };

@@ -1,7 +1,12 @@
 // Sweep grids, shards, point files and merging (sweep.hpp).
 #include "sweep.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <map>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -99,6 +104,28 @@ std::vector<SweepPoint> shard_points(const std::vector<SweepPoint>& all, int i, 
   std::vector<SweepPoint> out;
   for (std::size_t k = static_cast<std::size_t>(i); k < all.size(); k += static_cast<std::size_t>(n)) out.push_back(all[k]);
   return out;
+}
+
+void run_children(std::size_t count, int jobs, const std::function<int(std::size_t)>& child,
+                  const std::function<void(std::size_t, int)>& done) {
+  std::map<pid_t, std::size_t> running;
+  std::size_t next = 0;
+  while (next < count || !running.empty()) {
+    while (next < count && static_cast<int>(running.size()) < std::max(1, jobs)) {
+      std::fflush(nullptr);
+      const pid_t pid = fork();
+      if (pid < 0) throw std::runtime_error("fork failed: no more worker processes");
+      if (pid == 0) _exit(child(next));
+      running.emplace(pid, next++);
+    }
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const std::size_t k = it->second;
+    running.erase(it);
+    done(k, status);
+  }
 }
 
 std::string point_path(const std::string& dir, const SweepPoint& p) {

@@ -2,6 +2,7 @@
 /// `clothbench sweep`: a grid of independent runs (colliders x the values of each `--set` key), each
 /// point named by its settings and written to DIR/points/INDEX.json (or INDEX.error.json when it failed),
 /// so shards run anywhere (locally in worker processes, as a Slurm job array) and `merge` joins them.
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -44,6 +45,12 @@ std::string point_path(const std::string& dir, const SweepPoint& p);
 std::string point_error_path(const std::string& dir, const SweepPoint& p);
 /// The point's result exists and is this point's (a result of another grid there is an InputError).
 bool point_done(const std::string& dir, const SweepPoint& p);
+
+/// Runs child(0 .. count-1), each in a forked process of its own (no exec), at most `jobs` at once;
+/// done(k, status) gets each one's waitpid status as it ends, in the order they end. Fork before any
+/// thread or GL context exists in the parent.
+void run_children(std::size_t count, int jobs, const std::function<int(std::size_t)>& child,
+                  const std::function<void(std::size_t, int)>& done);
 
 /// Runs one point (its repetitions) and writes its result document; throws what the run throws.
 void run_point(const SweepGrid& grid, const SweepPoint& p, const std::string& dir);

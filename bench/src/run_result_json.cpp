@@ -1,0 +1,78 @@
+// RunResult <-> JSON (run_result_json.hpp).
+#include "run_result_json.hpp"
+
+namespace clothbench {
+
+namespace {
+
+// one list of fields for both directions
+template <typename J, typename R, typename F>
+void phase_fields(J& j, R& p, F&& f) {
+  f(j, "iterations", p.iterations);
+  f(j, "wall_ms", p.wall_ms);
+  f(j, "cpu_ms", p.cpu_ms);
+  f(j, "cdr_ms", p.cdr_ms);
+  f(j, "cs_ms", p.cs_ms);
+  f(j, "limit_ms", p.limit_ms);
+  f(j, "reached", p.reached);
+}
+
+template <typename J, typename A, typename F>
+void accuracy_fields(J& j, A& a, F&& f) {
+  f(j, "inside_pct", a.inside_pct), f(j, "depth_max_mm", a.depth_max_mm), f(j, "depth_mean_mm", a.depth_mean_mm);
+  f(j, "depth_p95_mm", a.depth_p95_mm), f(j, "points", a.points), f(j, "inside", a.inside);
+  f(j, "segments", a.segments), f(j, "crossings", a.crossings), f(j, "crossings_pct", a.crossings_pct);
+  f(j, "faces", a.faces), f(j, "faces_inside", a.faces_inside), f(j, "faces_inside_pct", a.faces_inside_pct);
+  f(j, "depth_ms", a.depth_ms), f(j, "crossings_ms", a.crossings_ms);
+}
+
+template <typename J, typename R, typename F>
+void run_fields(J& j, R& r, F&& f) {
+  f(j, "scene", r.scene), f(j, "collider", r.collider), f(j, "integrator", r.integrator), f(j, "regime", r.regime);
+  f(j, "config_hash", r.config_hash), f(j, "strain_threshold", r.strain_threshold);
+  f(j, "iteration_budget", r.iteration_budget), f(j, "estimate_s", r.estimate_s), f(j, "vertices", r.vertices);
+  f(j, "query_points", r.query_points), f(j, "body_triangles", r.body_triangles), f(j, "dt_s", r.dt_s);
+  f(j, "dt_bound_s", r.dt_bound_s), f(j, "dt_spectral_s", r.dt_spectral_s), f(j, "k_structural", r.k_structural);
+  f(j, "frames", r.frames), f(j, "steps_per_frame", r.steps_per_frame), f(j, "skinning_ms", r.skinning_ms);
+  f(j, "collider_update_ms", r.collider_update_ms), f(j, "setup_ms", r.setup_ms), f(j, "search_share", r.search_share);
+  f(j, "threads", r.threads), f(j, "seam_gap_max_mm", r.seam_gap_max_mm), f(j, "strain_max", r.strain_max);
+  f(j, "strain_p99", r.strain_p99), f(j, "strain_max_where", r.strain_max_where);
+  f(j, "kinetic_energy", r.kinetic_energy), f(j, "animate_strain_max", r.animate_strain_max);
+  f(j, "animate_inside_max_pct", r.animate_inside_max_pct), f(j, "animate_depth_max_mm", r.animate_depth_max_mm);
+  f(j, "animate_crossings_max_pct", r.animate_crossings_max_pct), f(j, "sew_iteration_ms", r.sew_iteration_ms);
+  f(j, "converged", r.converged);
+}
+
+}  // namespace
+
+nlohmann::json to_json(const RunResult& r) {
+  const auto put = [](nlohmann::json& j, const char* key, const auto& v) { j[key] = v; };
+  nlohmann::json j = nlohmann::json::object();
+  run_fields(j, r, put);
+  for (const auto& [name, p] : {std::pair{"sew", &r.sew}, {"drape", &r.drape}, {"animate", &r.animate}})
+    phase_fields(j[name], *p, put);
+  accuracy_fields(j["accuracy"], r.accuracy, put);
+  if (r.divergence)
+    j["divergence"] = {{"iteration", r.divergence->iteration},
+                       {"phase", static_cast<int>(r.divergence->phase)},
+                       {"vertex", r.divergence->vertex},
+                       {"reason", r.divergence->reason}};
+  return j;
+}
+
+RunResult run_result_from_json(const nlohmann::json& j) {
+  const auto get = [](const nlohmann::json& from, const char* key, auto& v) { from.at(key).get_to(v); };
+  RunResult r;
+  run_fields(j, r, get);
+  for (const auto& [name, p] : {std::pair{"sew", &r.sew}, {"drape", &r.drape}, {"animate", &r.animate}})
+    phase_fields(j.at(name), *p, get);
+  accuracy_fields(j.at("accuracy"), r.accuracy, get);
+  if (j.contains("divergence")) {
+    const auto& d = j["divergence"];
+    r.divergence = Divergence{d.at("iteration").get<long>(), static_cast<Phase>(d.at("phase").get<int>()),
+                              d.at("vertex").get<int>(), d.at("reason").get<std::string>()};
+  }
+  return r;
+}
+
+}  // namespace clothbench

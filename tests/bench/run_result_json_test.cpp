@@ -1,0 +1,45 @@
+// A RunResult through JSON and back (what a prefetch worker hands its parent): every measured field kept.
+#include "run_result_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include "report.hpp"
+
+namespace clothbench {
+namespace {
+
+TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
+  RunResult r;
+  r.scene = "shirt";
+  r.collider = "is-cpu";
+  r.regime = "papers";
+  r.config_hash = "0123456789abcdef";
+  r.vertices = 1817;
+  r.dt_s = 0.005;
+  r.k_structural = 0.36;
+  r.sew = {90, 50.5, 49.0, 3.4, 40.1, 38.2, true};
+  r.drape = {161, 140.0, 139.0, 6.1, 110.0, 100.0, false};
+  r.accuracy.inside_pct = 0.17;
+  r.accuracy.crossings = 21;
+  r.accuracy.crossings_pct = 0.61;
+  r.strain_max = 0.151;
+  r.strain_max_where = "spring 4863";
+  r.sew_iteration_ms = {0.5f, 0.25f};
+  r.converged = true;
+  r.divergence = Divergence{13, Phase::kSew, 910, "speed 51 m/s above max_speed"};
+  const RunResult b = run_result_from_json(to_json(r));
+  EXPECT_EQ(to_json(b), to_json(r));
+  // and the row a report writes from it is the same
+  EXPECT_EQ(result_row(b, "x"), result_row(r, "x"));
+  ASSERT_TRUE(b.divergence.has_value());
+  EXPECT_EQ(b.divergence->phase, Phase::kSew);
+  EXPECT_EQ(b.divergence->reason, "speed 51 m/s above max_speed");
+  EXPECT_EQ(b.drape.limit_ms, 100.0);
+  EXPECT_FALSE(b.drape.reached);
+  RunResult none = r;
+  none.divergence.reset();
+  EXPECT_FALSE(run_result_from_json(to_json(none)).divergence.has_value());
+}
+
+}  // namespace
+}  // namespace clothbench
