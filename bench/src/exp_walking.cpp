@@ -95,6 +95,10 @@ void walking_t2(ExperimentContext& ctx) {
     variants.push_back({regime, regime, regime_suffix(regime, "/"), {}, regime == "stable" ? all : without_vdb});
   variants.push_back({"stable, body held per frame (ablation)", "stable", "/held", {"body.move_between_frames=false"},
                       {"is-cpu"}});
+  // beyond the papers (issue 26): the cube of six views, where the front/back pair misses the sides
+  for (const std::string regime : kRegimes)
+    variants.push_back({regime + ", 6 views", regime, regime_suffix(regime, "/") + "/6views", {"collider.views=6"},
+                        {"is-cpu"}});
   for (std::size_t i = 0; i < 2; ++i) {
     const auto& g = garments[i];
     for (const Variant& variant : variants)
@@ -157,7 +161,9 @@ void walking_t2(ExperimentContext& ctx) {
       "depth and crossings stand beside the end state, and the verdict counts the worst frame. The body is "
       "posed once per frame, at its end; each cloth step within the frame sees the contacts as they were at "
       "the step's time (`body.move_between_frames`, d(t - tau) = d(t) + (n . v_body) tau; scenes/README.md); "
-      "the ablation row holds the frame's end pose for all of the frame's steps.\n\n" +
+      "the ablation row holds the frame's end pose for all of the frame's steps. The \"6 views\" rows run is-cpu "
+      "with the cube of six map views (`collider.views = 6`: front/back as the papers, plus left/right and "
+      "top/bottom), which see the body's sides that the front/back pair meets edge-on.\n\n" +
           t.str() +
           (media.empty()
                ? std::string()
