@@ -90,11 +90,13 @@ struct PairAnswer {
   bool outside() const { return depth > 0 || side; }
 };
 
-// dressing Eq. 5/9, walking Eq. 11/12 along the pair's axis; false when p is outside its image
-bool pair_answer(const MapSet& m, int pair, const Vec3& p, PairAnswer& a) {
+// dressing Eq. 5/9, walking Eq. 11/12 along the pair's axis; false when p is outside its image (the pair a
+// template argument: its axes are constants, as they were before there were more views than the papers' two)
+template <int Pair>
+bool pair_answer(const MapSet& m, const Vec3& p, PairAnswer& a) {
   const MapFrame& f = m.frame;
-  const int front = 2 * pair, cu = MapFrame::column_axis(front), rv = MapFrame::row_axis(front);
-  const int axis = MapFrame::view_axis(front);
+  constexpr int front = 2 * Pair, cu = MapFrame::column_axis(front), rv = MapFrame::row_axis(front);
+  constexpr int axis = MapFrame::view_axis(front);
   // world -> map (dressing Eq. 8 / walking Eq. 11): front column u, back column size - 1 - u
   const Real u = (p[cu] - f.origin(cu)) / f.pixel, v = (p[rv] - f.origin(rv)) / f.pixel;
   if (!(u >= 0 && v >= 0 && u < f.size && v < f.size)) return false;
@@ -123,13 +125,15 @@ bool replaces(ViewRule rule, const PairAnswer& a, const PairAnswer& b) {
 
 // the answering pair of views at p; false when no pair's image holds p
 bool choose(const MapSet& m, ViewRule rule, const Vec3& p, PairAnswer& best) {
+  if (m.frame.views == 2) return pair_answer<0>(m, p, best);  // the papers' front/back: nothing to choose
   bool any = false;
-  for (int pair = 0; pair < m.frame.views / 2; ++pair) {
-    PairAnswer a;
-    if (!pair_answer(m, pair, p, a)) continue;
-    if (!any || replaces(rule, best, a)) best = a;
-    any = true;
-  }
+  const auto consider = [&](bool inside_image, const PairAnswer& a) {
+    if (inside_image && (!any || replaces(rule, best, a))) best = a, any = true;
+  };
+  PairAnswer a;
+  consider(pair_answer<0>(m, p, a), a);
+  consider(pair_answer<1>(m, p, a), a);
+  if (m.frame.views == 6) consider(pair_answer<2>(m, p, a), a);
   return any;
 }
 

@@ -49,10 +49,10 @@ struct MapFrame {
   /// Distance between the near and far planes [m] (bboxdepth of dressing Eq. 5).
   Real depth_range() const { return z_max - z_min; }
   /// World axis (0 x, 1 y, 2 z) view k looks along: 2 for views 0-1, 0 for 2-3, 1 for 4-5.
-  static int view_axis(int view) { return view < 2 ? 2 : view < 4 ? 0 : 1; }
+  static constexpr int view_axis(int view) { return view < 2 ? 2 : view < 4 ? 0 : 1; }
   /// World axes of view k's window columns and rows.
-  static int column_axis(int view) { return view == 2 || view == 3 ? 2 : 0; }
-  static int row_axis(int view) { return view >= 4 ? 2 : 1; }
+  static constexpr int column_axis(int view) { return view == 2 || view == 3 ? 2 : 0; }
+  static constexpr int row_axis(int view) { return view >= 4 ? 2 : 1; }
   /// World coordinate of the squares' lower edge along `axis` [m].
   Real origin(int axis) const { return axis == 0 ? x0 : axis == 1 ? y0 : z0; }
   /// Near/far planes along `axis` [m].
