@@ -211,6 +211,7 @@ const std::vector<Experiment>& experiments() {
     add_stability_experiments(e);
     add_collider_experiments(e);
     add_pareto_experiments(e);
+    add_deviation_experiments(e);
     add_picture_experiments(e);
     add_claims_experiments(e);
     return e;

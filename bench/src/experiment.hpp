@@ -105,5 +105,6 @@ void add_stability_experiments(std::vector<Experiment>& out);
 void add_claims_experiments(std::vector<Experiment>& out);
 void add_pareto_experiments(std::vector<Experiment>& out);
 void add_collider_experiments(std::vector<Experiment>& out);
+void add_deviation_experiments(std::vector<Experiment>& out);
 
 }  // namespace clothbench

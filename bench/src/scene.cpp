@@ -241,6 +241,7 @@ void read_collider(Section s, Scene& scene) {
                                           std::to_string(o.views));
   s.flag("fit_extent", o.fit_extent);
   s.flag("float_maps", o.float_maps);
+  s.flag("tangent_plane", o.tangent_plane);
   s.number("max_speed", o.max_speed, 1e-3, 1e3);
   s.number("threads", o.threads, 1, 256);
   s.flag("coherent", o.coherent);
@@ -407,6 +408,7 @@ std::string collider_config(const Scene& s) {
   w("map_size", o.map_size)("side_layer", o.side_layer)("fit_extent", o.fit_extent)("float_maps", o.float_maps);
   w("max_speed", double(o.max_speed))("threads", o.threads)("coherent", o.coherent);
   w("voxel_size", double(o.voxel_size))("views", o.views)("side_layer_mm", double(o.side_layer_mm));
+  w("tangent_plane", o.tangent_plane);
   return w.str();
 }
 

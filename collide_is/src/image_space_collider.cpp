@@ -203,15 +203,19 @@ void ImageSpaceCollider::query(PointsView points, ContactsOut out) {
   stats_.degenerate += degenerate;
 }
 
+namespace {
+DepthTest depth_test(const ColliderOptions& o) { return o.tangent_plane ? DepthTest::kTangentPlane : DepthTest::kPapers; }
+}  // namespace
+
 std::unique_ptr<Collider> make_is_gl_collider(const ColliderOptions& options) {
   // context creation and shader compilation count as set-up
   Stopwatch watch;
   auto renderer = make_gl_map_renderer();
-  return std::make_unique<ImageSpaceCollider>(std::move(renderer), options, watch.ms());
+  return std::make_unique<ImageSpaceCollider>(std::move(renderer), options, watch.ms(), depth_test(options));
 }
 
 std::unique_ptr<Collider> make_is_cpu_collider(const ColliderOptions& options) {
-  return std::make_unique<ImageSpaceCollider>(make_cpu_map_renderer(), options, 0.0);
+  return std::make_unique<ImageSpaceCollider>(make_cpu_map_renderer(), options, 0.0, depth_test(options));
 }
 
 }  // namespace clothbench

@@ -57,6 +57,30 @@ TEST(ImageSpaceViews, MoreViewsHitTheSphereSidesWhereTwoMiss) {
   }
 }
 
+// collider.tangent_plane: a point 3 mm outside a sphere at 55 degrees from the view axis lies 5.2 mm
+// from the surface along z: the papers' comparison (tangent_plane = false) misses it at tol 5 mm, the
+// tangent-plane refinement (the default) finds it 3 mm out
+TEST(ImageSpaceDepthTest, TheOptionChoosesThePapersComparisonOrTheTangentPlane) {
+  const Vec3 c(0.0f, 0.5f, 0.0f);
+  const Real r = 0.3f;
+  const BodyFrame s = make_sphere_body(c, r, 64, 128);
+  const double t = 55 * M_PI / 180;
+  Points3 p(3, 1);
+  p.col(0) = c + (r + 0.003f) * Vec3(Real(std::sin(t)), 0.0f, Real(std::cos(t)));
+  for (bool plane : {true, false}) {
+    ColliderOptions o;
+    o.tangent_plane = plane;
+    auto col = make_is_cpu_collider(o);
+    col->set_body(s);
+    Contact k;
+    col->query(PointsView(p), ContactsOut{&k, 1});
+    EXPECT_EQ(k.hit, plane) << (plane ? "tangent plane" : "papers' z test");
+    if (plane) {
+      EXPECT_NEAR(k.depth, 0.003f, 0.001f);
+    }
+  }
+}
+
 // the extra views are the same cameras turned: a sphere's maps along X and Y hold the sphere
 TEST(ImageSpaceViews, ExtraViewsSeeTheSphereAlongTheirAxes) {
   const Vec3 c(0.05f, 0.5f, -0.02f);
