@@ -6,13 +6,13 @@
 // on one side only are listed. Exit 1 on a regression, 2 when no row could be judged.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "clothbench/io/errors.hpp"
 #include "commands.hpp"
+#include "report.hpp"
 #include "timing_stats.hpp"
 
 namespace clothbench::cli {
@@ -26,27 +26,16 @@ struct Benchmark {
 };
 using Benchmarks = std::map<std::string, Benchmark>;
 
+// nanoseconds in one time_unit
 double ns_per(const std::string& unit, const std::string& path) {
-  if (unit == "ns") return 1;
-  if (unit == "us") return 1e3;
-  if (unit == "ms") return 1e6;
-  if (unit == "s") return 1e9;
-  throw InputError(path + ": unknown time_unit '" + unit + "' (ns, us, ms, s)");
-}
-
-nlohmann::json parse(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path + ": not JSON: " + e.what());
-  }
+  const double per_ms = unit_per_ms(unit);
+  if (!std::isfinite(per_ms)) throw InputError(path + ": unknown time_unit '" + unit + "' (ns, us, ms, s)");
+  return 1e6 / per_ms;
 }
 
 // the iteration rows (aggregates are recomputed from them), by name
 Benchmarks read_benchmarks(const std::string& path) {
-  const nlohmann::json doc = parse(path);
+  const nlohmann::json doc = read_json_file(path);
   if (!doc.contains("benchmarks") || !doc["benchmarks"].is_array())
     throw InputError(path + ": no \"benchmarks\" array (expected Google Benchmark's layout)");
   Benchmarks s;

@@ -40,18 +40,10 @@ void print_verdict(const RunResult& r) {
       misses.empty() ? ("meets the limits (" + limits_text(r) + ")").c_str() : ("MISSES the limits: " + text).c_str());
 }
 
-// the runs' JSON: context with the scene, its overrides and config hash; a row per repetition with the verdict
-// (and their aggregates when there are several)
+// the runs' JSON (runs_document) with the --set overrides in its context
 nlohmann::json run_document(const RunArgs& a, const Scene& scene, const std::vector<RunResult>& runs) {
-  std::vector<nlohmann::json> rows;
-  for (const RunResult& r : runs) {
-    rows.push_back(result_row(r, scene.name + "/" + scene.collider));
-    rows.back()["limit_misses"] = limit_misses(r);
-  }
-  nlohmann::json doc = result_document(repetition_rows(rows));
-  doc["context"]["scene"] = a.scene;
+  nlohmann::json doc = runs_document(runs, scene.name + "/" + scene.collider, a.scene);
   doc["context"]["overrides"] = a.sets;
-  doc["context"]["config_hash"] = runs.front().config_hash;
   return doc;
 }
 
@@ -121,12 +113,7 @@ int run(const RunArgs& a) {
     runs.push_back(run_scene(scene, options));
   }
   if (a.estimate) return 0;
-  // the median run by time per iteration (the simulation is deterministic: only the times differ)
-  std::vector<const RunResult*> by_time;
-  for (const RunResult& r : runs) by_time.push_back(&r);
-  std::sort(by_time.begin(), by_time.end(),
-            [](auto* x, auto* y) { return x->ms_per_iteration() < y->ms_per_iteration(); });
-  const RunResult& r = *by_time[(by_time.size() - 1) / 2];
+  const RunResult& r = median_run(runs);
   print_summary(a, r);
   print_spread(runs);
   if (!a.json.empty()) write_text_file(a.json, run_document(a, scene, runs).dump(2) + "\n");

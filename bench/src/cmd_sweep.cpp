@@ -4,12 +4,10 @@
 // Every point runs in a child process of its own (fork, no exec), so a crash or a bad value fails that
 // point only; points already done in DIR are skipped. Exit 5 when a point failed or is missing.
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <sstream>
 #include <thread>
 
@@ -98,15 +96,11 @@ std::string grid_arguments(const SweepGrid& g, const std::string& dir) {
   return a + " --repetitions " + std::to_string(g.repetitions) + " --out " + shell_quote(fs::absolute(dir).string());
 }
 
-std::string command_output(const std::string& cmd) {
-  std::string out;
-  if (FILE* p = popen(cmd.c_str(), "r")) {
-    char buf[256];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    if (pclose(p) != 0) throw std::runtime_error("`" + cmd + "` failed: " + out);
-  } else {
-    throw std::runtime_error("cannot run `" + cmd + "`");
-  }
+// a command's output; a failing command is an error quoting it
+std::string checked_output(const std::string& cmd) {
+  int status = 0;
+  const std::string out = command_output(cmd, &status);
+  if (status != 0) throw std::runtime_error("`" + cmd + "` failed: " + out);
   return out;
 }
 
@@ -124,7 +118,7 @@ int run_slurm(const SweepArgs& a, const SweepGrid& grid, std::size_t points) {
   s << "exec " << shell_quote(fs::canonical("/proc/self/exe").string()) << " sweep " << grid_arguments(grid, a.out)
     << " --jobs 1 --shard \"$SLURM_ARRAY_TASK_ID/" << tasks << "\"\n";
   write_text_file(script, s.str());
-  const std::string reply = command_output("sbatch --parsable " + shell_quote(script) + " 2>&1");
+  const std::string reply = checked_output("sbatch --parsable " + shell_quote(script) + " 2>&1");
   const std::string job = reply.substr(0, reply.find_first_of(";\n"));
   std::cerr << "[sweep] submitted Slurm job " << job << ": " << tasks << " array tasks for " << points << " points ("
             << script << ")\n";
@@ -133,7 +127,7 @@ int run_slurm(const SweepArgs& a, const SweepGrid& grid, std::size_t points) {
     std::cerr << "[sweep] not waiting; when it is done: clothbench merge " << a.out << " --out " << merged << "\n";
     return 0;
   }
-  while (!command_output("squeue -h -j " + job + " -o %i 2>/dev/null || true").empty())
+  while (!checked_output("squeue -h -j " + job + " -o %i 2>/dev/null || true").empty())
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
   return merge_into({a.out}, merged, false);
 }

@@ -398,15 +398,15 @@ Claim views_claim(ExperimentContext& ctx) {
   for (const auto& [name, r] : rows) {
     const auto views = name.find("/is-cpu 320 px 6 views/");
     if (views == std::string::npos || !r.contains("crossings_pct")) continue;
-    const std::string os = name.substr(0, views) + "/embree/" + name.substr(name.rfind('/') + 1);
+    const std::string size = name.substr(name.rfind('/') + 1);  // pareto/GARMENT/CONFIGURATION/SIZE
+    const std::string os = name.substr(0, views) + "/embree/" + size;
     if (!rows.count(os) || !rows[os].contains("crossings_pct")) continue;
     const double cx = r["crossings_pct"].get<double>(), ox = rows[os]["crossings_pct"].get<double>();
     const double ratio = rows[os]["cdr_ms"].get<double>() / r["cdr_ms"].get<double>();
     ++compared;
     matched += cx <= ox + 0.1;  // within a tenth of a point of embree's
     lo = std::min(lo, ratio), hi = std::max(hi, ratio);
-    c.numbers += name.substr(name.find('/') + 1, name.find('/', name.find('/') + 1) - name.find('/') - 1) + " " +
-                 name.substr(name.rfind('/') + 1) + " v: " + num(cx, 2) + " % vs " + num(ox, 2) + " %; ";
+    c.numbers += r.value("scene", "?") + " " + size + " v: " + num(cx, 2) + " % vs " + num(ox, 2) + " %; ";
   }
   if (compared == 0) return c;
   c.numbers += "CD&R per iteration, embree / 6-view image space: " + num(lo, 1) + "-" + num(hi, 1) + "x";

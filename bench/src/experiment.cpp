@@ -120,10 +120,7 @@ const RunResult& ExperimentContext::run(const std::string& scene, const std::str
     }
     it = cache_.emplace(key, std::move(runs)).first;
   }
-  std::vector<const RunResult*> sorted;
-  for (const auto& r : it->second) sorted.push_back(&r);
-  std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->ms_per_iteration() < b->ms_per_iteration(); });
-  return *sorted[sorted.size() / 2];
+  return median_run(it->second);
 }
 
 void ExperimentContext::add_run(const RunResult& r, const std::string& name, const nlohmann::json& extra) {

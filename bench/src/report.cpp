@@ -10,7 +10,6 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <sstream>
 #include <thread>
 
@@ -19,17 +18,22 @@
 
 namespace clothbench {
 
-namespace {
-
-std::string command_output(const std::string& command) {
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  if (!pipe) return "";
+std::string command_output(const std::string& command, int* status) {
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) {
+    if (status) *status = -1;
+    return "";
+  }
   std::string out;
   std::array<char, 256> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe.get())) out += buf.data();
+  while (std::fgets(buf.data(), buf.size(), pipe)) out += buf.data();
+  const int rc = pclose(pipe);
+  if (status) *status = rc;
   while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
   return out;
 }
+
+namespace {
 
 std::string cpu_model() {
   std::ifstream in("/proc/cpuinfo");
@@ -128,11 +132,19 @@ nlohmann::json machine_context() {
           {"threads", 1}};
 }
 
+double unit_per_ms(const std::string& unit) {
+  if (unit == "ns") return 1e6;
+  if (unit == "us") return 1e3;
+  if (unit == "ms") return 1;
+  if (unit == "s") return 1e-3;
+  return NAN;
+}
+
 void set_times(nlohmann::json& row, double real_ms, double cpu_ms, std::string unit) {
   // the unit that keeps the real time at 1 or more (Google Benchmark: one unit per benchmark)
   const double a = std::abs(real_ms);
   if (unit.empty()) unit = a >= 1 || a == 0 ? "ms" : a >= 1e-3 ? "us" : "ns";
-  const double per_ms = unit == "ns" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e-3 : 1;
+  const double per_ms = unit_per_ms(unit);
   row["real_time"] = real_ms * per_ms;
   row["cpu_time"] = cpu_ms * per_ms;
   row["time_unit"] = unit;
@@ -200,9 +212,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
 }
 
 double row_time_ms(const nlohmann::json& row, const char* key) {
-  const std::string unit = row.value("time_unit", std::string("ms"));
-  const double per_ms = unit == "ns" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e-3 : 1;
-  return row.at(key).get<double>() / per_ms;
+  return row.at(key).get<double>() / unit_per_ms(row.value("time_unit", std::string("ms")));
 }
 
 namespace {
@@ -247,11 +257,11 @@ nlohmann::json repetition_rows(const std::vector<nlohmann::json>& runs) {
     cpu.push_back(row_time_ms(row, "cpu_time"));
     out.push_back(std::move(row));
   }
-  // the aggregates carry the other fields of the run with the median real time (the lower middle one)
+  // the aggregates carry the other fields of the median run (the one median_run picks: the upper middle)
   std::vector<std::size_t> order(real.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return real[a] < real[b]; });
-  const nlohmann::json& first = out[order[(order.size() - 1) / 2]];
+  const nlohmann::json& first = out[order[order.size() / 2]];
   const std::string unit = first["time_unit"];  // one unit for the benchmark, the median run's
   for (std::size_t i = 0; i < out.size(); ++i) set_times(out[i], real[i], cpu[i], unit);
   const std::size_t n = runs.size();
@@ -264,6 +274,29 @@ nlohmann::json repetition_rows(const std::vector<nlohmann::json>& runs) {
 
 nlohmann::json result_document(const nlohmann::json& rows) {
   return {{"context", machine_context()}, {"benchmarks", rows}};
+}
+
+nlohmann::json runs_document(const std::vector<RunResult>& runs, const std::string& name,
+                             const std::string& scene_path) {
+  std::vector<nlohmann::json> rows;
+  for (const RunResult& r : runs) {
+    rows.push_back(result_row(r, name));
+    rows.back()["limit_misses"] = limit_misses(r);
+  }
+  nlohmann::json doc = result_document(repetition_rows(rows));
+  doc["context"]["scene"] = scene_path;
+  if (!runs.empty()) doc["context"]["config_hash"] = runs.front().config_hash;
+  return doc;
+}
+
+nlohmann::json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path + ": not JSON: " + e.what());
+  }
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

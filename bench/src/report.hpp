@@ -61,6 +61,22 @@ nlohmann::json repetition_rows(const std::vector<nlohmann::json>& runs);
 /// {"context": machine_context(), "benchmarks": rows}.
 nlohmann::json result_document(const nlohmann::json& rows);
 
+/// The document of one configuration's runs named `name`: every run's row with its limit_misses (and the
+/// aggregates of repetition_rows when there are several), the context naming the scene file and the
+/// configuration's hash.
+nlohmann::json runs_document(const std::vector<RunResult>& runs, const std::string& name,
+                             const std::string& scene_path);
+
+/// The JSON of a file; InputError naming the path when it cannot be opened or is not JSON.
+nlohmann::json read_json_file(const std::string& path);
+
+/// The output of a shell command, trailing newlines removed; `status` (when given) receives pclose's
+/// status (-1 when the command could not be started).
+std::string command_output(const std::string& command, int* status = nullptr);
+
+/// Values of time_unit in 1 ms: ns 1e6, us 1e3, ms 1, s 1e-3; NaN for any other.
+double unit_per_ms(const std::string& unit);
+
 /// Writes text to PATH.tmp then renames it (no half-written file); throws InputError naming the
 /// path when the directory is not writable.
 void write_text_file(const std::string& path, const std::string& text);

@@ -18,23 +18,22 @@
 
 namespace clothbench {
 
+double RunResult::per_iteration(double PhaseResult::*field) const {
+  const long n = iterations();
+  return n ? (sew.*field + drape.*field + animate.*field) / double(n) : 0;
+}
 double RunResult::ms_per_iteration() const { return cdr_ms_per_iteration() + cs_ms_per_iteration(); }
-double RunResult::cdr_ms_per_iteration() const {
-  const long n = iterations();
-  return n ? (sew.cdr_ms + drape.cdr_ms + animate.cdr_ms) / double(n) : 0;
-}
-double RunResult::cs_ms_per_iteration() const {
-  const long n = iterations();
-  return n ? (sew.cs_ms + drape.cs_ms + animate.cs_ms) / double(n) : 0;
-}
+double RunResult::cdr_ms_per_iteration() const { return per_iteration(&PhaseResult::cdr_ms); }
+double RunResult::cs_ms_per_iteration() const { return per_iteration(&PhaseResult::cs_ms); }
+double RunResult::limit_ms_per_iteration() const { return per_iteration(&PhaseResult::limit_ms); }
+double RunResult::cpu_ms_per_iteration() const { return per_iteration(&PhaseResult::cpu_ms); }
 
-double RunResult::limit_ms_per_iteration() const {
-  const long n = iterations();
-  return n ? (sew.limit_ms + drape.limit_ms + animate.limit_ms) / double(n) : 0;
-}
-double RunResult::cpu_ms_per_iteration() const {
-  const long n = iterations();
-  return n ? (sew.cpu_ms + drape.cpu_ms + animate.cpu_ms) / double(n) : 0;
+const RunResult& median_run(const std::vector<RunResult>& runs) {
+  std::vector<const RunResult*> by_time;
+  for (const RunResult& r : runs) by_time.push_back(&r);
+  std::sort(by_time.begin(), by_time.end(),
+            [](const RunResult* a, const RunResult* b) { return a->ms_per_iteration() < b->ms_per_iteration(); });
+  return *by_time[by_time.size() / 2];
 }
 
 namespace {

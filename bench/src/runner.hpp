@@ -68,6 +68,8 @@ struct RunResult {
 
   long iterations() const { return sew.iterations + drape.iterations + animate.iterations; }
   double total_s() const { return (sew.wall_ms + drape.wall_ms + animate.wall_ms) / 1e3; }
+  /// A phase field (ms) summed over the phases, per iteration (0 without iterations).
+  double per_iteration(double PhaseResult::*field) const;
   double ms_per_iteration() const;
   double cdr_ms_per_iteration() const;
   double cs_ms_per_iteration() const;
@@ -75,6 +77,10 @@ struct RunResult {
   /// CPU time of the running thread per iteration over the phases (collider worker threads not counted).
   double cpu_ms_per_iteration() const;
 };
+
+/// Of repetitions of one configuration, the run with the median time per iteration (of an even count the
+/// upper middle one); the simulation is deterministic, so only the times differ. `runs` must not be empty.
+const RunResult& median_run(const std::vector<RunResult>& runs);
 
 /// Called after every animation frame: frame number (1-based), animation time [s], body, cloth.
 using FrameCallback = std::function<void(long frame, double t, const BodyFrame& body, const Simulator& cloth)>;

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <map>
 #include <filesystem>
-#include <fstream>
 #include <set>
 
 #include "clothbench/io/errors.hpp"
@@ -138,14 +137,6 @@ std::string point_error_path(const std::string& dir, const SweepPoint& p) {
 
 namespace {
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  const auto j = nlohmann::json::parse(in, nullptr, false);
-  if (!in.good() && !in.eof()) throw InputError(path + ": cannot read");
-  if (j.is_discarded()) throw InputError(path + ": not JSON");
-  return j;
-}
-
 nlohmann::json point_json(const SweepPoint& p) {
   return {{"index", p.index}, {"name", p.name}, {"collider", p.collider}, {"sets", p.sets}};
 }
@@ -155,7 +146,7 @@ nlohmann::json point_json(const SweepPoint& p) {
 bool point_done(const std::string& dir, const SweepPoint& p) {
   const std::string path = point_path(dir, p);
   if (!fs::exists(path)) return false;
-  const nlohmann::json j = read_json(path);
+  const nlohmann::json j = read_json_file(path);
   if (!j.contains("point") || j["point"].value("name", "") != p.name)
     throw InputError(path + ": the result of another point (" + (j.contains("point") ? j["point"].value("name", "?") : "?") +
                      ") where this grid has " + p.name + ": use another --out folder");
@@ -167,17 +158,9 @@ void run_point(const SweepGrid& grid, const SweepPoint& p, const std::string& di
   if (!p.collider.empty()) scene.collider = p.collider;
   RunOptions options;
   options.progress = false;
-  std::vector<nlohmann::json> rows;
-  std::string hash;
-  for (int r = 0; r < grid.repetitions; ++r) {
-    const RunResult result = run_scene(scene, options);
-    rows.push_back(result_row(result, scene.name + "/" + p.name));
-    rows.back()["limit_misses"] = limit_misses(result);
-    hash = result.config_hash;
-  }
-  nlohmann::json doc = result_document(repetition_rows(rows));
-  doc["context"]["scene"] = grid.scene;
-  doc["context"]["config_hash"] = hash;
+  std::vector<RunResult> runs;
+  for (int r = 0; r < grid.repetitions; ++r) runs.push_back(run_scene(scene, options));
+  nlohmann::json doc = runs_document(runs, scene.name + "/" + p.name, grid.scene);
   doc["point"] = point_json(p);
   fs::remove(point_error_path(dir, p));
   write_text_file(point_path(dir, p), doc.dump(1) + "\n");
@@ -193,7 +176,7 @@ void write_point_error(const std::string& dir, const SweepPoint& p, const std::s
 void claim_folder(const std::string& dir, const SweepGrid& grid) {
   const std::string path = (fs::path(dir) / "sweep.json").string();
   if (fs::exists(path)) {
-    const nlohmann::json there = read_json(path);
+    const nlohmann::json there = read_json_file(path);
     if (there != grid.to_json())
       throw InputError(dir + " holds another sweep (" + path + " differs from this grid): use another --out folder");
     return;
@@ -214,15 +197,15 @@ std::string build_of(const nlohmann::json& context) {
 // one folder's rows into `out`, its failed and missing points into `failed`
 void merge_folder(const std::string& dir, nlohmann::json& out, nlohmann::json& failed, std::set<std::string>& builds,
                   nlohmann::json& context) {
-  const SweepGrid grid = SweepGrid::from_json(read_json((fs::path(dir) / "sweep.json").string()));
+  const SweepGrid grid = SweepGrid::from_json(read_json_file((fs::path(dir) / "sweep.json").string()));
   for (const SweepPoint& p : expand_grid(grid)) {
     if (fs::exists(point_path(dir, p)) && point_done(dir, p)) {
-      const nlohmann::json doc = read_json(point_path(dir, p));
+      const nlohmann::json doc = read_json_file(point_path(dir, p));
       builds.insert(build_of(doc["context"]));
       if (context.is_null()) context = doc["context"];
       for (const auto& row : doc["benchmarks"]) out.push_back(row);
     } else if (fs::exists(point_error_path(dir, p))) {
-      nlohmann::json e = read_json(point_error_path(dir, p));
+      nlohmann::json e = read_json_file(point_error_path(dir, p));
       e["folder"] = dir;
       failed.push_back(e);
     } else {
@@ -243,7 +226,7 @@ nlohmann::json merge_sweeps(const std::vector<std::string>& dirs, bool allow_mix
   for (const std::string& dir : dirs) {
     if (!fs::exists(fs::path(dir) / "sweep.json")) throw InputError(dir + ": not a sweep folder (no sweep.json)");
     merge_folder(dir, rows, failed, builds, context);
-    grids.push_back(read_json((fs::path(dir) / "sweep.json").string()));
+    grids.push_back(read_json_file((fs::path(dir) / "sweep.json").string()));
   }
   if (builds.size() > 1 && !allow_mixed) {
     std::string list;
