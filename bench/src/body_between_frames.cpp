@@ -5,11 +5,11 @@ namespace clothbench {
 
 void BodyBetweenFrames::query(PointsView points, ContactsOut out) {
   inner_.query(points, out);
-  if (!(tau_ > 0)) return;
+  if (!(tau_ > 0) && skin_ == 0) return;
   for (std::size_t i = 0; i < out.count; ++i) {
     Contact& c = out[i];
     if (!c.hit) continue;
-    c.depth += c.normal.dot(c.body_velocity) * tau_;  // d(t - tau) = d(t) + (n . v_body) tau
+    c.depth += c.normal.dot(c.body_velocity) * tau_ - skin_;  // d(t - tau) = d(t) + (n . v_body) tau, less the skin
     c.hit = c.depth < tol_;
   }
 }

@@ -40,7 +40,22 @@ void run_fields(J& j, R& r, F&& f) {
   f(j, "kinetic_energy", r.kinetic_energy), f(j, "animate_strain_max", r.animate_strain_max);
   f(j, "animate_inside_max_pct", r.animate_inside_max_pct), f(j, "animate_depth_max_mm", r.animate_depth_max_mm);
   f(j, "animate_crossings_max_pct", r.animate_crossings_max_pct), f(j, "sew_iteration_ms", r.sew_iteration_ms);
-  f(j, "converged", r.converged);
+  f(j, "converged", r.converged), f(j, "window_seam_gap_mm", r.window_seam_gap_mm);
+}
+
+// frame samples as rows [t_s, inside_pct, depth_max_mm, crossings_pct, strain_max]
+nlohmann::json frames_json(const std::vector<FrameSample>& samples) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const FrameSample& s : samples) rows.push_back({s.t_s, s.inside_pct, s.depth_max_mm, s.crossings_pct, s.strain_max});
+  return rows;
+}
+
+std::vector<FrameSample> frames_from_json(const nlohmann::json& rows) {
+  std::vector<FrameSample> samples;
+  for (const auto& row : rows)
+    samples.push_back({row.at(0).get<double>(), row.at(1).get<double>(), row.at(2).get<double>(),
+                       row.at(3).get<double>(), row.at(4).get<double>()});
+  return samples;
 }
 
 }  // namespace
@@ -52,6 +67,7 @@ nlohmann::json to_json(const RunResult& r) {
   for (const auto& [name, p] : {std::pair{"sew", &r.sew}, {"drape", &r.drape}, {"animate", &r.animate}})
     phase_fields(j[name], *p, put);
   accuracy_fields(j["accuracy"], r.accuracy, put);
+  j["frame_samples"] = frames_json(r.frame_samples);
   if (r.divergence)
     j["divergence"] = {{"iteration", r.divergence->iteration},
                        {"phase", static_cast<int>(r.divergence->phase)},
@@ -67,6 +83,7 @@ RunResult run_result_from_json(const nlohmann::json& j) {
   for (const auto& [name, p] : {std::pair{"sew", &r.sew}, {"drape", &r.drape}, {"animate", &r.animate}})
     phase_fields(j.at(name), *p, get);
   accuracy_fields(j.at("accuracy"), r.accuracy, get);
+  r.frame_samples = frames_from_json(j.at("frame_samples"));
   if (j.contains("divergence")) {
     const auto& d = j["divergence"];
     r.divergence = Divergence{d.at("iteration").get<long>(), static_cast<Phase>(d.at("phase").get<int>()),

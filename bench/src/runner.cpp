@@ -28,6 +28,12 @@ double RunResult::cs_ms_per_iteration() const { return per_iteration(&PhaseResul
 double RunResult::limit_ms_per_iteration() const { return per_iteration(&PhaseResult::limit_ms); }
 double RunResult::cpu_ms_per_iteration() const { return per_iteration(&PhaseResult::cpu_ms); }
 
+double RunResult::frame_mean(double FrameSample::*field) const {
+  double sum = 0;
+  for (const FrameSample& f : frame_samples) sum += f.*field;
+  return frame_samples.empty() ? 0 : sum / double(frame_samples.size());
+}
+
 const RunResult& median_run(const std::vector<RunResult>& runs) {
   std::vector<const RunResult*> by_time;
   for (const RunResult& r : runs) by_time.push_back(&r);
@@ -336,13 +342,15 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   bool alive = true;
   const Real tol = scene.collider_options.tol;
   const bool between = scene.body.move_between_frames;
-  BodyBetweenFrames dresser_between(dresser, tol), collider_between(collider, tol);
+  const Real skin = Real(scene.body.skin_mm * 1e-3);
+  BodyBetweenFrames dresser_between(dresser, tol, skin), collider_between(collider, tol, skin);
   for (long f = 1; f <= lead_in && alive; ++f) {
     alive = advance_frame(source, source.dress_time() + double(f) * frame_dt, frame_dt, steps, sim, dresser_between,
                           between, frame, unmeasured_ms);
     progress.report("animate (lead-in): frame %ld of %ld", f, lead_in);
   }
   collider.update_body(frame);
+  r.window_seam_gap_mm = 1e3 * double(sim.seam_gap_max());
   progress.plan(frames * steps);  // the measured window's collider sets the pace from here
   PhaseClock clock{sim};
   const double update_before = collider.stats().update_ms;
@@ -361,6 +369,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
       r.animate_inside_max_pct = std::max(r.animate_inside_max_pct, a.inside_pct);
       r.animate_depth_max_mm = std::max(r.animate_depth_max_mm, a.depth_max_mm);
       r.animate_crossings_max_pct = std::max(r.animate_crossings_max_pct, a.crossings_pct);
+      r.frame_samples.push_back({t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(sim.strain().max)});
     }
     if (options.on_frame) options.on_frame(f, t, frame, sim);
     not_animation_ms += outside.ms();

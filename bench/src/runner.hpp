@@ -30,6 +30,13 @@ struct PhaseResult {
   bool reached = false;  ///< sew: sewn; drape: settled; animate: clip finished
 };
 
+/// The exact oracle at one animation frame (RunOptions::measure_frames).
+struct FrameSample {
+  double t_s = 0;              ///< animation time [s]
+  double inside_pct = 0, depth_max_mm = 0, crossings_pct = 0;
+  double strain_max = 0;       ///< largest structural strain, fraction
+};
+
 /// What a run measured. Times in ms unless named otherwise.
 struct RunResult {
   std::string scene, collider;
@@ -60,6 +67,8 @@ struct RunResult {
   double animate_inside_max_pct = 0;  ///< RunOptions::measure_frames: most cloth inside the body at any frame [%]
   double animate_depth_max_mm = 0;    ///< RunOptions::measure_frames: deepest penetration at any frame [mm]
   double animate_crossings_max_pct = 0;  ///< RunOptions::measure_frames: most structural springs crossing the body at any frame [%]
+  std::vector<FrameSample> frame_samples;  ///< RunOptions::measure_frames: every measured animation frame
+  double window_seam_gap_mm = 0;      ///< largest seam gap when the measured animation window starts [mm]
   std::vector<float> sew_iteration_ms;  ///< wall time of every sew iteration (RunOptions::trace)
   bool converged = false;       ///< sewn (when sewing) and settled
   std::optional<Divergence> divergence;
@@ -76,6 +85,8 @@ struct RunResult {
   double limit_ms_per_iteration() const;  ///< of cs: the velocity limits' passes
   /// CPU time of the running thread per iteration over the phases (collider worker threads not counted).
   double cpu_ms_per_iteration() const;
+  /// Mean over frame_samples of a field (0 without samples).
+  double frame_mean(double FrameSample::*field) const;
 };
 
 /// Of repetitions of one configuration, the run with the median time per iteration (of an even count the

@@ -151,6 +151,7 @@ void read_body(Section s, BodySpec& b) {
   s.flag("walk_in_place", b.walk_in_place);
   s.number("fps", b.fps, 1, 1000);
   s.flag("move_between_frames", b.move_between_frames);
+  s.number("skin_mm", b.skin_mm, 0, 1000);
   s.choice("shape", [&](const std::string& v) {
     if (v != "mesh" && v != "sphere") throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + v + "\"");
     b.shape = v;
@@ -321,6 +322,11 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
   read_material(Section(root["material"].as_table(), file, "material"), s.material);
   read_solver(Section(root["solver"].as_table(), file, "solver"), s.solver);
   read_collider(Section(root["collider"].as_table(), file, "collider"), s);
+  if (s.body.skin_mm > 0 && !(s.body.skin_mm * 1e-3 < double(s.collider_options.tol)))
+    throw InputError(located(file, 0, "body.skin_mm = " + std::to_string(s.body.skin_mm) +
+                                          ": must be below collider.tol (" +
+                                          std::to_string(1e3 * double(s.collider_options.tol)) +
+                                          " mm), or the skin would push every contact out"));
   read_stop(Section(root["stop"].as_table(), file, "stop"), s.stop);
   return s;
 }
@@ -363,7 +369,7 @@ class ConfigWriter {
 std::string body_config(const BodySpec& b) {
   ConfigWriter w("body");
   w("file", b.file)("animation", b.animation)("dress_at_s", b.dress_at_s)("start_s", b.start_s)("end_s", b.end_s);
-  w("walk_in_place", b.walk_in_place)("fps", b.fps)("move_between_frames", b.move_between_frames);
+  w("walk_in_place", b.walk_in_place)("fps", b.fps)("move_between_frames", b.move_between_frames)("skin_mm", b.skin_mm);
   w("shape", b.shape)("radius", double(b.radius));
   w("center", b.center)("velocity", b.velocity)("move_s", b.move_s);
   return w.str();

@@ -22,6 +22,7 @@ struct BodySpec {
   double fps = 60;                    ///< body frames per second of animation (collider updates)
   bool move_between_frames = true;    ///< each cloth step sees the body at its own time (BodyBetweenFrames),
                                       ///< not the frame's end pose
+  double skin_mm = 0;                 ///< while animated, the body is answered this much thicker (BodyBetweenFrames) [mm]
   std::string shape = "mesh";         ///< "mesh" or "sphere"
   Real radius = 0.25f;                ///< sphere radius [m]
   Vec3 center = Vec3(0, 0.5f, 0);     ///< sphere centre at t = 0 [m]

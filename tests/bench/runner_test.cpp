@@ -121,5 +121,19 @@ TEST(BodyBetweenFrames, AStepBeforeThePoseSeesTheBodyWhereItWasThen) {
   EXPECT_EQ(between.name(), "sphere");
 }
 
+// the skin: a moving body answered 4 mm thicker holds a point resting 2 mm outside it as 2 mm inside
+TEST(BodyBetweenFrames, TheSkinMakesTheBodyThicker) {
+  SphereCollider sphere(Vec3::Zero(), 0.25f);
+  BodyBetweenFrames between(sphere, 0.005f, 0.004f);
+  Points3 p(3, 2);
+  p.col(0) = Vec3(0.252f, 0, 0);  // 2 mm outside
+  p.col(1) = Vec3(0.256f, 0, 0);  // 6 mm outside: beyond tol, not a contact at all
+  std::vector<Contact> c(2);
+  between.query(PointsView(p), {c.data(), c.size()});
+  ASSERT_TRUE(c[0].hit);
+  EXPECT_NEAR(c[0].depth, -0.002f, 1e-5f);
+  EXPECT_FALSE(c[1].hit);
+}
+
 }  // namespace
 }  // namespace clothbench

@@ -163,6 +163,19 @@ TEST(Scene, ColliderViewsAndSideLayerWidth) {
   EXPECT_NE(error_of("[collider]\nside_layer_mm = -1\n").find("collider.side_layer_mm"), std::string::npos);
 }
 
+// issue 18: the moving body's skin must stay below the hit distance, or every contact would be pushed out
+TEST(Scene, BodySkinIsReadAndMustStayBelowTheHitDistance) {
+  const Scene s = parse_scene("[body]\nskin_mm = 4\n", "s.toml");
+  EXPECT_EQ(s.body.skin_mm, 4);
+  EXPECT_EQ(parse_scene("", "s.toml").body.skin_mm, 0);
+  EXPECT_NE(config_text(s).find("body.skin_mm = 4\n"), std::string::npos) << config_text(s);
+  const std::string e = error_of("[body]\nskin_mm = 5\n");
+  EXPECT_NE(e.find("body.skin_mm"), std::string::npos) << e;
+  EXPECT_NE(e.find("below collider.tol"), std::string::npos) << e;
+  EXPECT_EQ(error_of("[body]\nskin_mm = 7\n[collider]\ntol = 0.008\n"), "");
+  EXPECT_NE(error_of("[body]\nskin_mm = -1\n").find("body.skin_mm"), std::string::npos);
+}
+
 TEST(Scene, MissingFileAndPathResolution) {
   EXPECT_THROW(load_scene("/nonexistent/scene.toml"), InputError);
   Scene s;
