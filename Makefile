@@ -7,9 +7,12 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 PACKAGES := cmake g++ make pkg-config libeigen3-dev libfcl-dev libembree-dev libosmesa6-dev \
             libassimp-dev assimp-testmodels libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
             libtomlplusplus-dev nlohmann-json3-dev libpng-dev python3-matplotlib libboost-dev \
-            libopenvdb-dev libboost-iostreams-dev valgrind
-# what only `make reproduce` needs (CI's `make test` stays lean): ffmpeg for the walking video
-REPRODUCE_PACKAGES := ffmpeg
+            libopenvdb-dev libboost-iostreams-dev valgrind libjs-three libjs-chart.js
+# what only `make reproduce` needs (CI's `make test` stays lean): ffmpeg for the walking video, chromium for
+# the screenshots of results/index.html
+REPRODUCE_PACKAGES := ffmpeg chromium
+# the headless browser of `make test`'s browser test (tests/browser), without recommends
+BROWSER_PACKAGES := chromium
 # the one-node Slurm cluster of `make test`'s cluster test (tools/slurm-local), without recommends
 CLUSTER_PACKAGES := slurmctld slurmd slurm-client munge
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -25,7 +28,7 @@ quick: build
 	$(BUILD)/bin/clothbench reproduce --quick --out $(BUILD)/results-quick
 
 test: build
-	$(MAKE) deps PACKAGES="$(CLUSTER_PACKAGES)" APT_FLAGS=--no-install-recommends
+	$(MAKE) deps PACKAGES="$(CLUSTER_PACKAGES) $(BROWSER_PACKAGES)" APT_FLAGS=--no-install-recommends
 	cd $(BUILD) && ctest $(CTEST_FLAGS) -j$(JOBS)
 
 # the CI performance gate's baseline: instruction counts of perf/'s workloads under callgrind, rewritten

@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "experiment.hpp"
 #include "history.hpp"
+#include "html_report.hpp"
 #include "report.hpp"
 
 namespace clothbench::cli {
@@ -116,6 +117,8 @@ int reproduce(const ReproduceArgs& a) {
     std::cerr << "[" << e.id << "] done in " << num(clock.ms() / 1e3, 1) << " s\n";
   }
   if (wanted.empty()) write_index(ctx, a.out, done, a.quick);
+  // results/index.html from whatever the folder now holds (screenshots of it on full runs)
+  write_html_report(a.out, wanted.empty());
   return 0;
 }
 

@@ -10,6 +10,7 @@
 #include "report.hpp"
 #include "runner.hpp"
 #include "timing_stats.hpp"
+#include "viewer_gltf.hpp"
 
 namespace clothbench::cli {
 
@@ -111,6 +112,13 @@ int run(const RunArgs& a) {
   options.progress = !a.quiet;
   options.estimate_only = a.estimate;
   options.measure_frames = a.every_frame;
+  // --gltf on a moving body: every frame's positions, for the animated file (a repetition starts over)
+  std::vector<ViewerFrame> frames;
+  if (!a.gltf.empty())
+    options.on_frame = [&frames](long frame, double t, const BodyFrame& body, const Simulator& cloth) {
+      if (frame == 1) frames.clear();
+      frames.push_back({t, body.positions, cloth.positions()});
+    };
   std::vector<RunResult> runs;
   for (int i = 0; i < (a.estimate ? 1 : a.repetitions); ++i) {
     if (a.repetitions > 1 && !a.quiet) std::cerr << "repetition " << i + 1 << " of " << a.repetitions << "\n";
@@ -129,7 +137,7 @@ int run(const RunArgs& a) {
     std::printf("  picture %s (front, side, back) drawn by %s\n", a.png.c_str(),
                 picture_renderer_name(default_picture_renderer()).c_str());
   }
-  if (!a.gltf.empty()) export_dressed(a.gltf, r.final_body, r.mesh);
+  if (!a.gltf.empty()) export_viewer_gltf(a.gltf, r.final_body, r.mesh, frames);
   if (r.divergence) return 3;
   return a.strict && !limit_misses(r).empty() ? 4 : 0;
 }
@@ -147,7 +155,7 @@ void add_run_command(CLI::App& app, Action& action) {
   cmd->add_option("--set", args->sets, "override a scene field: section.key=value (repeatable)");
   cmd->add_option("--json", args->json, "write the result as JSON (Google Benchmark layout)");
   cmd->add_option("--png", args->png, "write a picture of the dressed body (front, side, back)");
-  cmd->add_option("--gltf", args->gltf, "export the dressed body as binary glTF (.glb)");
+  cmd->add_option("--gltf", args->gltf, "export the dressed body as binary glTF (.glb): the end state, or for a moving body the animation (morph targets, at most 16 frames kept); cloth vertices carry _STRAIN and _DISTANCE");
   cmd->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   cmd->add_flag("--strict", args->strict, "exit 4 when the run misses the accuracy limits");
   cmd->add_flag("--estimate", args->estimate, "print how long the run may take and stop (nothing simulated)");

@@ -6,6 +6,7 @@
 #include "paper_figures.hpp"
 #include "picture.hpp"
 #include "report.hpp"
+#include "viewer_gltf.hpp"
 
 namespace clothbench {
 
@@ -99,7 +100,7 @@ void dressing_t1(ExperimentContext& ctx) {
       ctx.add_run(r, std::string("dressing-t1/") + g.product + "/" + c + regime_suffix(regime, "/"));
       if (c == "is-cpu") pictures.push_back(regime_picture(ctx, r, "dressing-t1", g.product, regime));
       if (c == "is-cpu" && regime == "stable" && g.product == std::string("dress")) {
-        export_dressed(ctx.path("pictures/dressing-t1-dress.glb"), r.final_body, r.mesh);
+        export_viewer_gltf(ctx.path("pictures/dressing-t1-dress.glb"), r.final_body, r.mesh);
         gltf = "; the dress as binary glTF: [dressing-t1-dress.glb](pictures/dressing-t1-dress.glb)";
       }
     }

@@ -12,6 +12,7 @@
 #include "paper_figures.hpp"
 #include "picture.hpp"
 #include "report.hpp"
+#include "viewer_gltf.hpp"
 
 namespace clothbench {
 
@@ -48,6 +49,7 @@ bool make_video(const std::string& pattern, const std::string& mp4, double fps) 
 // one animation frame kept for the picture sequence: body and cloth vertex positions [m] (3 x n)
 struct SequenceFrame {
   long frame;
+  double t;
   Points3 body_positions, body_normals, cloth_positions;
 };
 
@@ -71,15 +73,15 @@ struct WalkVariant {
   std::vector<std::string> sets, colliders;
 };
 
-// stable and papers' regimes with every collider on walk_07_01, stable on walk_08_02, then the ablations and the
-// travelling body (is-cpu; embree beside the travelling one)
+// stable and papers' regimes with every collider on walk_07_01, stable on walk_08_02 with image space and the
+// fastest exact collider, then the ablations (is-cpu) and the travelling body (is-cpu and embree)
 std::vector<WalkVariant> walk_variants() {
-  const std::vector<std::string> all{"is-gl", "is-cpu", "fcl", "embree", "bbtree"};
+  const std::vector<std::string> all{"is-gl", "is-cpu", "fcl", "embree", "bbtree"}, some{"is-gl", "is-cpu", "embree"};
   std::vector<WalkVariant> v;
   v.push_back({"stable", "walk_07_01", "stable", "", {}, all});
   // vdb voxelises the skinned body again every frame (seconds each): half a second of walking only
   v.push_back({"stable, 0.5 s", "walk_07_01", "stable", "/0.5s", {"body.end_s=1.5"}, {"vdb"}});
-  v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, all});
+  v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some});
   v.push_back({"papers", "walk_07_01", "papers", "/papers", {}, all});
   const std::vector<std::string> is_cpu{"is-cpu"};
   v.push_back({"stable, the papers' front/back maps", "walk_07_01", "stable", "/2views", {"collider.views=2"}, is_cpu});
@@ -164,7 +166,7 @@ void walking_t2(ExperimentContext& ctx) {
                    "frames/s", "skinning ms/frame", "maps, refit or field ms/frame", "cloth ms/frame (CD&R + CS)",
                    "paper s/frame / frames/s", "inside [%] worst / mean frame", "depth max [mm] worst frame",
                    "crossings [%] worst / mean frame", "strain max [%] (animation)", "meets the limits (every frame)"});
-  std::string media, charts;
+  std::string media, charts, models;
   std::vector<std::string> sets_quick;
   if (ctx.quick()) sets_quick = {"body.start_s=0.1", "body.end_s=0.2", "stop.max_iterations=60"};
   for (std::size_t i = 0; i < 2; ++i) {
@@ -183,17 +185,26 @@ void walking_t2(ExperimentContext& ctx) {
         options.measure_frames = true;  // accuracy at every frame, not the last one only
         const bool main = variant.label == "stable" && variant.clip == "walk_07_01";
         const bool pictures = c == "is-cpu" && main;
+        // the report's 3-D viewer: the is-cpu walk of each garment, and embree beside it on the skirt
+        const bool animated = main && (c == "is-cpu" || (c == "embree" && i == 0));
         const std::string stem = std::string("pictures/walking-t2-") + g.name;
         std::vector<SequenceFrame> sequence;
-        if (pictures)
-          options.on_frame = [&](long frame, double, const BodyFrame& body, const Simulator& sim) {
+        if (animated)
+          options.on_frame = [&](long frame, double at, const BodyFrame& body, const Simulator& sim) {
             if (frame == 1) sequence.clear();  // a repetition starts over
-            sequence.push_back({frame, body.positions, body.normals, sim.positions()});
+            sequence.push_back({frame, at, body.positions, body.normals, sim.positions()});
           };
         const RunResult& r = ctx.run(scene, c, sets, options);
         t.row(walk_row(g.product, variant, c, r, paper::kWalkingT2[i]));
         ctx.add_run(r, std::string("walking-t2/") + g.name + "/" + c + variant.row_suffix);
         if (main) charted.emplace_back(c, r);
+        if (animated) {
+          std::vector<ViewerFrame> frames;
+          for (const auto& f : sequence) frames.push_back({f.t, f.body_positions, f.cloth_positions});
+          const std::string glb = stem + "-" + c + ".glb";
+          export_viewer_gltf(ctx.path(glb), r.final_body, r.mesh, frames, 12);
+          models += (models.empty() ? "" : ", ") + ("[" + std::string(g.product) + ", " + c + "](" + glb + ")");
+        }
         if (!pictures) continue;
         write_sequence(sequence, r, ctx.path(stem + "/" + stem.substr(9)));
         const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"),
@@ -236,7 +247,10 @@ void walking_t2(ExperimentContext& ctx) {
           (media.empty()
                ? std::string()
                : "\nPictures of the is-cpu runs (front view; " + picture_renderer_name(default_picture_renderer()) +
-                     "; frames are copied during the run and drawn after it, outside s/frame):\n\n" + media));
+                     "; frames are copied during the run and drawn after it, outside s/frame):\n\n" + media) +
+          (models.empty() ? std::string()
+                          : "\nAnimated binary glTF of the walks (12 frames kept, for results/index.html's viewer): " +
+                                models + ".\n"));
 }
 
 // how far the cloth's centre trails the sphere's centre along the motion [m]

@@ -9,7 +9,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "clothbench/io/gltf_export.hpp"
 #ifdef CLOTHBENCH_PICTURES_GL
 #include "clothbench/render/offscreen_renderer.hpp"
 #endif
@@ -245,37 +244,6 @@ Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, 
 #else
   throw std::runtime_error("pictures: OpenGL renderer not built (configure with -DCLOTHBENCH_WITH_GL=ON)");
 #endif
-}
-
-void export_dressed(const std::string& path, const BodyFrame& body, const ClothMesh& cloth) {
-  std::vector<ExportMesh> meshes{{"body", body.positions, body.triangles, {0.78f, 0.75f, 0.71f}}};
-  const int panels = std::max<int>(1, static_cast<int>(cloth.panel_names.size()));
-  const Tris triangles = quad_triangles(cloth.quads);
-  for (int p = 0; p < panels; ++p) {
-    // every vertex of the panel (also those in no quad), renumbered in order
-    std::vector<int> index(static_cast<std::size_t>(cloth.positions.cols()), -1);
-    std::vector<Eigen::Index> used;
-    for (Eigen::Index v = 0; v < cloth.positions.cols(); ++v)
-      if (vertex_panel(cloth, v) == p) {
-        index[std::size_t(v)] = static_cast<int>(used.size());
-        used.push_back(v);
-      }
-    // the panel's triangles in the new numbering
-    std::vector<int> tris;
-    for (Eigen::Index t = 0; t < triangles.cols(); ++t)
-      if (index[std::size_t(triangles(0, t))] >= 0)
-        for (int k = 0; k < 3; ++k) tris.push_back(index[std::size_t(triangles(k, t))]);
-    ExportMesh m;
-    m.name = p < static_cast<int>(cloth.panel_names.size()) ? cloth.panel_names[std::size_t(p)] : "cloth";
-    m.positions.resize(3, static_cast<Eigen::Index>(used.size()));
-    for (std::size_t i = 0; i < used.size(); ++i)
-      m.positions.col(static_cast<Eigen::Index>(i)) = cloth.positions.col(used[i]);
-    m.triangles = Eigen::Map<const Tris>(tris.data(), 3, static_cast<Eigen::Index>(tris.size() / 3));
-    const Rgb c = panel_colour(p);
-    m.colour = {c.r / 255.f, c.g / 255.f, c.b / 255.f};
-    meshes.push_back(std::move(m));
-  }
-  export_gltf(path, meshes);
 }
 
 Image side_by_side(const std::vector<Image>& images) {

@@ -38,9 +38,6 @@ Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, 
 /// lacks it or no OSMesa context can be created.
 Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, View view, PictureRenderer renderer);
 
-/// Writes the body and the cloth (one mesh per panel: every vertex of the panel, its quads split
-/// into triangles) as a binary glTF file (assimp's exporter), for Blender or a web viewer.
-void export_dressed(const std::string& path, const BodyFrame& body, const ClothMesh& cloth);
 
 /// Several images side by side (same height), with a 4-pixel white gap.
 Image side_by_side(const std::vector<Image>& images);

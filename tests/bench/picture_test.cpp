@@ -2,10 +2,8 @@
 // the CPU rasteriser, and the glTF export of every cloth vertex.
 #include "picture.hpp"
 
-#include <assimp/scene.h>
 #include <gtest/gtest.h>
 
-#include <assimp/Importer.hpp>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -117,27 +115,6 @@ TEST(Picture, RejectsOpenGlWhenNotBuilt) {
   if (has_picture_renderer(PictureRenderer::kGl)) GTEST_SKIP() << "this build has the OpenGL renderer";
   const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 8, 16);
   EXPECT_THROW(render_dressed(sphere, ClothMesh{}, 64, View::kFront, PictureRenderer::kGl), std::runtime_error);
-}
-
-TEST(Picture, GltfKeepsClothVerticesInNoQuad) {
-  // a grid panel plus a vertex tied to it by a spring only, as meshed outlines leave at corners
-  ClothMesh cloth = cloth_in_front();
-  const Eigen::Index nv = cloth.positions.cols();
-  cloth.positions.conservativeResize(3, nv + 1);
-  cloth.positions.col(nv) = cloth.positions.col(nv - 1) + Vec3(0.01f, 0.01f, 0);
-  cloth.panel.push_back(0);
-  const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 12, 24);
-  const std::string path = (std::filesystem::temp_directory_path() / "clothbench_picture_test.glb").string();
-  export_dressed(path, sphere, cloth);
-  Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(path, 0);
-  ASSERT_NE(scene, nullptr) << importer.GetErrorString();
-  unsigned body = 0, panel = 0;
-  for (unsigned i = 0; i < scene->mNumMeshes; ++i)
-    (std::string(scene->mMeshes[i]->mName.C_Str()) == "body" ? body : panel) += scene->mMeshes[i]->mNumVertices;
-  EXPECT_EQ(body, static_cast<unsigned>(sphere.vertex_count()));
-  EXPECT_EQ(panel, static_cast<unsigned>(nv + 1));
-  std::filesystem::remove(path);
 }
 
 }  // namespace
