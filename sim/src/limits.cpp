@@ -5,7 +5,8 @@
 // already past it is shortened at limit_speed at most. A pass sweeps the springs from the held vertices out. Directional: springs
 // perpendicular to v_dir average (Eq. 5); on the others the rear point catches up with the front one,
 // except that a held rear point (attached, in contact, or already following one) makes the front follow
-// it, and catching up that would add kinetic energy to the pair averages instead.
+// it, and catching up that would add kinetic energy to the pair averages instead; directional-literal keeps the
+// rules as stated (walking Eq. 6 and the two rules after it).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -23,16 +24,17 @@ const char* to_string(Limit limit) {
     case Limit::kVelocity: return "velocity";
     case Limit::kVelocityZero: return "velocity-zero";
     case Limit::kDirectional: return "directional";
+    case Limit::kDirectionalLiteral: return "directional-literal";
   }
   return "?";
 }
 
 Limit parse_limit(const std::string& name) {
-  for (Limit l :
-       {Limit::kNone, Limit::kStiff, Limit::kPosition, Limit::kVelocity, Limit::kVelocityZero, Limit::kDirectional})
+  for (Limit l : {Limit::kNone, Limit::kStiff, Limit::kPosition, Limit::kVelocity, Limit::kVelocityZero,
+                  Limit::kDirectional, Limit::kDirectionalLiteral})
     if (name == to_string(l)) return l;
   throw std::invalid_argument("limit: unknown method '" + name +
-                              "' (none, stiff, position, velocity, velocity-zero, directional)");
+                              "' (none, stiff, position, velocity, velocity-zero, directional, directional-literal)");
 }
 
 std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa, Real wb,
@@ -44,11 +46,13 @@ std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real
   switch (limit) {
     case Limit::kVelocityZero: return {0, 0};  // dressing 4.3
     case Limit::kVelocity: return average;     // walking Eq. 5
-    case Limit::kDirectional: {
+    case Limit::kDirectional:
+    case Limit::kDirectionalLiteral: {
       // walking Eq. 6 rules: perpendicular springs average, others: the rear point catches up with the front
       if (std::abs(cos_alpha) < 0.3f) return average;
       const std::pair<Real, Real> catch_up =
           cos_alpha > 0 ? std::pair<Real, Real>{vb - target, vb} : std::pair<Real, Real>{va, va + target};
+      if (limit == Limit::kDirectionalLiteral) return catch_up;
       // our guard: catching up must not add kinetic energy to the pair (it does not keep momentum, and
       // taken literally it diverges on a cloth draped over a sphere); where it would, Eq. 5 instead
       const auto energy = [&](Real a, Real b) { return wa * a * a + wb * b * b; };
@@ -60,7 +64,9 @@ std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real
 
 void Simulator::limit_velocities(bool contacts_stop_inward) {
   const Limit l = params_.limit;
-  if (l != Limit::kVelocity && l != Limit::kVelocityZero && l != Limit::kDirectional) return;
+  if (l != Limit::kVelocity && l != Limit::kVelocityZero && l != Limit::kDirectional &&
+      l != Limit::kDirectionalLiteral)
+    return;
   const Real max_len_factor = 1 + params_.threshold;
   const Vec3 v_grav = params_.gravity * dt_;  // walking Eq. 6: v_grav = g dt
   // held points cannot catch up: attached ones and those the body holds (in contact)
@@ -161,12 +167,12 @@ void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, E
   if (vb - va <= target) return;  // only further elongation is forbidden: a spring may shorten
   if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
   Real na = va, nb = vb;
-  if (l == Limit::kDirectional) {
+  if (l == Limit::kDirectional || l == Limit::kDirectionalLiteral) {
     // walking Eq. 6: v_dir = v_grav + v_object; the rules after it pick averaging or the rear point
     const Vec3 v_dir = v_grav + spring_object_velocity(a, b);
     const Real cos_a = v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
     const int rear = cos_a > 0 ? a : b;
-    if (std::abs(cos_a) >= 0.3f && held_[static_cast<std::size_t>(rear)]) {
+    if (l == Limit::kDirectional && std::abs(cos_a) >= 0.3f && held_[static_cast<std::size_t>(rear)]) {
       // a held rear point cannot catch up: the front follows it and is held in turn (our reading)
       na = rear == a ? va : vb - target;
       nb = na + target;

@@ -419,6 +419,18 @@ TEST(LimitStretchVelocity, DirectionalRulePicksRearPointBySignOfCos) {
   EXPECT_FLOAT_EQ(b4, 0);
 }
 
+TEST(LimitStretchVelocity, TheLiteralDirectionalRuleCatchesUpWhateverTheEnergy) {
+  // walking Eq. 6 as stated: p1 (rear) takes p2's 3, where ours averages to 1
+  auto [a1, b1] = limit_stretch_velocity(Limit::kDirectionalLiteral, -1, 3, 0.9f);
+  EXPECT_FLOAT_EQ(a1, 3);
+  EXPECT_FLOAT_EQ(b1, 3);
+  auto [a2, b2] = limit_stretch_velocity(Limit::kDirectionalLiteral, -1, 3, 0.2f);  // perpendicular: Eq. 5
+  EXPECT_FLOAT_EQ(a2, 1);
+  EXPECT_FLOAT_EQ(b2, 1);
+  EXPECT_EQ(parse_limit("directional-literal"), Limit::kDirectionalLiteral);
+  EXPECT_STREQ(to_string(Limit::kDirectionalLiteral), "directional-literal");
+}
+
 TEST(LimitStretchVelocity, CatchingUpNeverAddsKineticEnergy) {
   // p1 catching up with p2 (3) would raise 1 + 9 to 9 + 9: Eq. 5 instead
   auto [a1, b1] = limit_stretch_velocity(Limit::kDirectional, -1, 3, 0.9f);

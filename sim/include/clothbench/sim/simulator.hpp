@@ -29,9 +29,9 @@ struct Material {
 };
 
 /// How super-elasticity is limited (dressing section 4, walking section 3).
-enum class Limit { kNone, kStiff, kPosition, kVelocity, kVelocityZero, kDirectional };
+enum class Limit { kNone, kStiff, kPosition, kVelocity, kVelocityZero, kDirectional, kDirectionalLiteral };
 const char* to_string(Limit limit);
-/// Parses "none", "stiff", "position", "velocity", "velocity-zero", "directional"; throws
+/// Parses "none", "stiff", "position", "velocity", "velocity-zero", "directional", "directional-literal"; throws
 /// std::invalid_argument naming the accepted values otherwise.
 Limit parse_limit(const std::string& name);
 
@@ -134,8 +134,9 @@ Vec3 collision_response(const Vec3& v, const Contact& contact, Real friction, Re
 /// (va, vb) unchanged. The Simulator adds one rule of ours to kDirectional: a rear point that is
 /// held (attached, in contact with the body, or already following a held point this iteration)
 /// cannot catch up, so the front follows it instead. Taken literally (without both rules of ours)
-/// the rule diverged on the hanging square of tests/sim and on the moving-sphere tablecloth when we
-/// tried it; no test keeps the literal variant.
+/// the rule diverged on the hanging square of tests/sim when we tried it. kDirectionalLiteral is walking
+/// Eq. 6 with its rules as stated: no energy guard here, and no held rear point in the Simulator
+/// (walking-f8 runs both).
 std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1, Real wb = 1,
                                              Real target = 0);
 
