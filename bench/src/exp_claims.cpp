@@ -291,23 +291,27 @@ Claim directional_claim(ExperimentContext& ctx) {
   Claim c{"walking Fig. 8", "directional modification beats averaging on a moving sphere",
           "[walking-f8](walking-f8.md)", "", kNotRun};
   auto rows = rows_of(ctx, "walking-f8");
+  const auto& literal = rows["walking-f8/tablecloth/directional-literal"];
   const auto& d = rows["walking-f8/tablecloth/directional"];
   const auto& v = rows["walking-f8/tablecloth/velocity"];
-  if (d.is_null() || v.is_null() || !d.contains("lag_cm") || !v.contains("lag_cm")) return c;
-  const auto show = [](const nlohmann::json& r) {
-    return r["diverged"].get<int>() ? std::string("diverged")
-                                    : "strain max during motion " + num(100 * r.value("animate_strain_max", NAN), 1) +
-                                          " %, lag " + num(r.value("lag_cm", NAN), 1) + " cm";
+  if (d.is_null() || v.is_null() || literal.is_null() || !v.contains("lag_cm")) return c;
+  const auto diverged = [](const nlohmann::json& r) { return r["diverged"].get<int>() != 0; };
+  const auto show = [&](const nlohmann::json& r) {
+    return diverged(r) ? std::string("diverged")
+                       : "strain max during motion " + num(100 * r.value("animate_strain_max", NAN), 1) + " %, lag " +
+                             num(r.value("lag_cm", NAN), 1) + " cm";
   };
-  c.numbers = "directional: " + show(d) + "; velocity averaging: " + show(v);
-  if (d["diverged"].get<int>()) {
-    c.verdict = "fails: the directional rule diverges on this scene";
-  } else {
-    const double ds = d.value("animate_strain_max", NAN), vs = v.value("animate_strain_max", NAN);
-    c.verdict = ds < vs ? "holds (less strain during the motion)"
-                        : "fails here: averaging holds the strain as well or better (" + num(100 * ds, 1) + " % vs " +
-                              num(100 * vs, 1) + " %)";
-  }
+  c.numbers = "the paper's rule (Eq. 6 as stated): " + show(literal) + "; ours (guarded): " + show(d) +
+              "; velocity averaging: " + show(v);
+  // the verdict is the paper's rule's; ours is reported beside it
+  const auto beats = [&](const nlohmann::json& r) {
+    return !diverged(r) && r.value("animate_strain_max", NAN) < v.value("animate_strain_max", NAN) &&
+           r.value("lag_cm", NAN) <= v.value("lag_cm", NAN);
+  };
+  c.verdict = diverged(literal) ? "fails with the paper's rule: it diverges on this scene"
+              : beats(literal)  ? "holds with the paper's rule (less strain and no more lag than averaging)"
+                                : "fails with the paper's rule (more strain or more lag than averaging)";
+  c.verdict += std::string("; ours ") + (beats(d) ? "beats averaging" : "does not (more strain or more lag)");
   return c;
 }
 
