@@ -9,7 +9,7 @@ void BodyBetweenFrames::query(PointsView points, ContactsOut out) {
   for (std::size_t i = 0; i < out.count; ++i) {
     Contact& c = out[i];
     if (!c.hit) continue;
-    c.depth += c.normal.dot(c.body_velocity) * tau_ - skin_;  // d(t - tau) = d(t) + (n . v_body) tau, less the skin
+    c.depth += c.normal.dot(c.body_velocity) * tau_ - skin_;  // d(t - tau) = d(t) + (n . v_body) tau, less the skin (Durupinar Eq. 4's threshold)
     c.hit = c.depth < tol_;
   }
 }

@@ -72,4 +72,17 @@ inline constexpr DurupinarF6Row kDurupinarF6[] = {
     {"trousers", 2774, 140, 6.863},
 };
 
+/// Durupinar & Gudukbay 2007, section 5: frame rates of an animation sequence (Pentium IV 3.01 GHz, GeForce PCX 5750,
+/// body of 17,953 vertices, dt 0.05 s).
+struct DurupinarFpsRow {
+  const char* sequence;
+  double fps;
+};
+inline constexpr DurupinarFpsRow kDurupinarFps[] = {
+    {"naked model", 18.020},
+    {"texture-mapped outfit of 1,700 vertices", 1.574},
+    {"woven outfit", 1.050},
+    {"knitted outfit", 1.570},
+};
+
 }  // namespace clothbench::paper
