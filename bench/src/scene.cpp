@@ -232,6 +232,7 @@ void read_collider(Section s, Scene& scene) {
   s.text("name", scene.collider);
   s.text("dress_with", scene.dress_with);
   s.number("tol", o.tol, 0, 1);
+  s.flag("face_normals", o.face_normals);
   s.number("search_radius", o.search_radius, 1e-4, 10);
   s.number("map_size", o.map_size, 16, 8192);
   s.flag("side_layer", o.side_layer);
@@ -412,7 +413,7 @@ std::string collider_config(const Scene& s) {
   ConfigWriter w("collider");
   w("name", s.collider)("dress_with", s.dress_with)("tol", double(o.tol))("search_radius", double(o.search_radius));
   w("map_size", o.map_size)("side_layer", o.side_layer)("fit_extent", o.fit_extent)("float_maps", o.float_maps);
-  w("max_speed", double(o.max_speed))("threads", o.threads)("coherent", o.coherent);
+  w("max_speed", double(o.max_speed))("threads", o.threads)("coherent", o.coherent)("face_normals", o.face_normals);
   w("voxel_size", double(o.voxel_size))("views", o.views)("side_layer_mm", double(o.side_layer_mm));
   w("tangent_plane", o.tangent_plane);
   return w.str();

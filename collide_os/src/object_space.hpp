@@ -25,14 +25,14 @@ Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const B
                      const ColliderOptions& options, const Find& find, std::int64_t& searches) {
   ++searches;
   const ClosestPoint near = find(p, options.search_radius);
-  if (near.triangle >= 0) return contact_from_closest(body, pseudo, p, near, options.tol);
+  if (near.triangle >= 0) return contact_from_closest(body, pseudo, p, near, options.tol, options.face_normals);
   Contact far;
   far.depth = options.search_radius;
   // outside the bounding box of a closed mesh is outside the mesh
   if ((p.array() < box.min.array()).any() || (p.array() > box.max.array()).any()) return far;
   // nothing within the radius: only a point deep inside can still be a hit
   const ClosestPoint any = find(p, std::numeric_limits<Real>::infinity());
-  const Contact c = contact_from_closest(body, pseudo, p, any, options.tol);
+  const Contact c = contact_from_closest(body, pseudo, p, any, options.tol, options.face_normals);
   return c.hit ? c : far;
 }
 
@@ -116,7 +116,7 @@ Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const B
   }
   ClosestPoint cp = find(p, radius);
   if (cp.triangle < 0) cp = seed;
-  const Contact c = contact_from_closest(body, pseudo, p, cp, options.tol);
+  const Contact c = contact_from_closest(body, pseudo, p, cp, options.tol, options.face_normals);
   m.triangle = cp.triangle;
   m.outside = c.hit ? 0 : c.depth;
   return c;

@@ -31,7 +31,7 @@ void BruteForceCollider::query(PointsView points, ContactsOut out) {
       ++stats_.degenerate;
       continue;
     }
-    out[i] = contact_from_closest(body_, pseudo_, p, closest_point_brute(body_, p), options_.tol);
+    out[i] = contact_from_closest(body_, pseudo_, p, closest_point_brute(body_, p), options_.tol, options_.face_normals);
     stats_.hits += out[i].hit;
   }
   stats_.points += static_cast<std::int64_t>(points.count);

@@ -82,7 +82,7 @@ Vec3 PseudoNormals::at(const ClosestPoint& cp) const {
 }
 
 Contact contact_from_closest(const BodyFrame& body, const PseudoNormals& pseudo, const Vec3& p,
-                             const ClosestPoint& cp, Real tol) {
+                             const ClosestPoint& cp, Real tol, bool face_normal) {
   Contact c;
   if (cp.triangle < 0) {
     c.depth = std::numeric_limits<float>::infinity();
@@ -99,6 +99,10 @@ Contact contact_from_closest(const BodyFrame& body, const PseudoNormals& pseudo,
     const int vi = body.triangles(k, cp.triangle);
     n += cp.bary[k] * body.normals.col(vi);
     v += cp.bary[k] * body.velocities.col(vi);
+  }
+  if (face_normal) {
+    const auto corner = [&](int k) { return body.positions.col(body.triangles(k, cp.triangle)); };
+    n = (corner(1) - corner(0)).cross(corner(2) - corner(0));
   }
   const Real len = n.norm();
   c.normal = len > 0 ? Vec3(n / len) : pseudo.at(cp).normalized();

@@ -43,6 +43,29 @@ TEST(MeshQuery, BruteMatchesAnalyticSphere) {
   EXPECT_EQ(brute.stats().points, 2000);
 }
 
+// dressing section 7's response normal: the closest triangle's face normal, not the interpolated vertex normal
+TEST(MeshQuery, FaceNormalsAreTheClosestTrianglesOwn) {
+  const BodyFrame coarse = make_sphere_body(Vec3::Zero(), 0.3f, 6, 12);
+  ColliderOptions options;
+  options.face_normals = true;
+  BruteForceCollider faces(options), vertices;
+  faces.set_body(coarse);
+  vertices.set_body(coarse);
+  Points3 p(3, 1);
+  // just inside, next to a mesh vertex: there the interpolated normal is the vertex's, about 15 degrees off the face's
+  p.col(0) = 0.98f * coarse.positions.col(20) + 0.002f * (coarse.positions.col(21) - coarse.positions.col(20));
+  std::vector<Contact> f(1), v(1);
+  faces.query(p, {f.data(), 1});
+  vertices.query(p, {v.data(), 1});
+  ASSERT_TRUE(f[0].hit);
+  const ClosestPoint cp = closest_point_brute(coarse, p.col(0));
+  const auto corner = [&](int k) { return coarse.positions.col(coarse.triangles(k, cp.triangle)); };
+  const Vec3 face = (corner(1) - corner(0)).cross(corner(2) - corner(0)).normalized();
+  EXPECT_NEAR(f[0].normal.dot(face), 1, 1e-5);
+  EXPECT_LT(v[0].normal.dot(face), 0.9999f);  // the vertex normals' blend differs
+  EXPECT_FLOAT_EQ(f[0].depth, v[0].depth);    // only the normal changes
+}
+
 TEST(MeshQuery, NaNPointsAreCountedDegenerate) {
   BruteForceCollider brute;
   brute.set_body(make_sphere_body(Vec3::Zero(), 0.3f, 8, 16));

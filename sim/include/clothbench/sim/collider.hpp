@@ -71,6 +71,8 @@ struct ColliderOptions {
   bool coherent = true;         ///< object space: each point's bound and closest triangle carried
                                 ///< between queries (false: every point searched from scratch)
   Real voxel_size = 0.002f;     ///< vdb: voxel edge of the body's signed distance field [m]
+  bool face_normals = false;    ///< fcl, embree, brute: respond along the closest triangle's face normal (the
+                                ///< dressing paper's object space, section 7) instead of interpolated vertex normals
 };
 
 /// Pluggable cloth-body collision detection. Non-copyable; owns its GL/FCL/Embree handles.

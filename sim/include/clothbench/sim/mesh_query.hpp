@@ -40,10 +40,11 @@ class PseudoNormals {
 };
 
 /// Turns an exact closest point into the contract's Contact: depth signed by the pseudo-normal,
-/// normal and body velocity interpolated barycentrically from the frame's vertex attributes,
-/// hit when inside or closer than tol.
+/// normal and body velocity interpolated barycentrically from the frame's vertex attributes (with
+/// `face_normal`, the normal is the closest triangle's face normal, the dressing paper's object-space
+/// response, section 7), hit when inside or closer than tol.
 Contact contact_from_closest(const BodyFrame& body, const PseudoNormals& pseudo, const Vec3& p,
-                             const ClosestPoint& cp, Real tol);
+                             const ClosestPoint& cp, Real tol, bool face_normal = false);
 
 /// Exhaustive closest point over every triangle (O(nt)); the reference for tests.
 ClosestPoint closest_point_brute(const BodyFrame& body, const Vec3& p);
