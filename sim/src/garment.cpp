@@ -382,11 +382,24 @@ bool on_several_edges(const PanelGrid& g, int v) {
   return runs > 1;
 }
 
+// The edge that shares edge e's end `t` (0: its start, 1: its end) as a corner: the one before or after it
+// on the closed outline (-1 for a panel of one edge, whose ends meet each other).
+int edge_at_corner(const Panel& p, int e, double t) {
+  const int n = p.edge_count();
+  if (n < 2) return -1;
+  return t > 0.5 ? (e + 1) % n : (e + n - 1) % n;
+}
+
 // Where one edge of a seam has a vertex on a corner and the other's end vertex lies less than a
 // grid spacing h short of the matching corner, that vertex moves onto the corner (when its panel has no vertex there
-// and its edge was not aligned by an earlier seam), so the seam's end pairs join corner to corner.
-void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<PanelGrid>& grids, bool a_locked,
-                    bool b_locked) {
+// and its edge was not aligned by an earlier seam), so the seam's end pairs join corner to corner. The moved
+// vertex now lies on the edge that meets this one at the corner too, and joins that edge's run there:
+// otherwise a later seam along that edge pairs its own end vertex, a fraction of a spacing from the
+// corner, with what is sewn to the corner, and the two seams together draw two neighbouring vertices of
+// one panel onto one point (their spring squeezed to nothing, the seam gap stuck at millimetres).
+void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<PanelGrid>& grids,
+                    const std::set<std::pair<int, int>>& locked) {
+  const bool a_locked = locked.count({s.panel_a, s.edge_a}) > 0, b_locked = locked.count({s.panel_b, s.edge_b}) > 0;
   PanelGrid& ga = grids[static_cast<std::size_t>(s.panel_a)];
   PanelGrid& gb = grids[static_cast<std::size_t>(s.panel_b)];
   auto& ra = ga.edge_vertices[static_cast<std::size_t>(s.edge_a)];
@@ -394,6 +407,11 @@ void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<Pan
   if (ra.empty() || rb.empty()) return;
   const Panel& pa = pat.panels[static_cast<std::size_t>(s.panel_a)];
   const Panel& pb = pat.panels[static_cast<std::size_t>(s.panel_b)];
+  struct Joined {
+    int panel, edge, vertex;
+    double t;  // the corner's fraction on `edge`
+  };
+  std::vector<Joined> joined;  // added after the loop: the runs' references stay valid until then
   for (const double ta : {0.0, 1.0}) {
     const double tb = s.reversed ? 1 - ta : ta;
     auto& va = ta > 0.5 ? ra.back() : ra.front();
@@ -401,8 +419,20 @@ void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<Pan
     const bool a_on = std::abs(va.first - ta) < 1e-9, b_on = std::abs(vb.first - tb) < 1e-9;
     const bool a_near = std::abs(va.first - ta) * edge_length(pa, s.edge_a) < h && !on_several_edges(ga, va.second);
     const bool b_near = std::abs(vb.first - tb) * edge_length(pb, s.edge_b) < h && !on_several_edges(gb, vb.second);
-    if (a_on && !b_on && b_near && !b_locked && !occupied(gb, point_on_edge(pb, s.edge_b, tb))) vb.first = tb;
-    if (b_on && !a_on && a_near && !a_locked && !occupied(ga, point_on_edge(pa, s.edge_a, ta))) va.first = ta;
+    if (a_on && !b_on && b_near && !b_locked && !occupied(gb, point_on_edge(pb, s.edge_b, tb))) {
+      vb.first = tb;
+      joined.push_back({s.panel_b, edge_at_corner(pb, s.edge_b, tb), vb.second, 1 - tb});
+    }
+    if (b_on && !a_on && a_near && !a_locked && !occupied(ga, point_on_edge(pa, s.edge_a, ta))) {
+      va.first = ta;
+      joined.push_back({s.panel_a, edge_at_corner(pa, s.edge_a, ta), va.second, 1 - ta});
+    }
+  }
+  for (const Joined& j : joined) {
+    if (j.edge < 0 || locked.count({j.panel, j.edge}) > 0) continue;
+    auto& run = grids[static_cast<std::size_t>(j.panel)].edge_vertices[static_cast<std::size_t>(j.edge)];
+    if (std::any_of(run.begin(), run.end(), [&](const auto& tv) { return tv.second == j.vertex; })) continue;
+    run.insert(j.t > 0.5 ? run.end() : run.begin(), {j.t, j.vertex});
   }
 }
 
@@ -423,7 +453,7 @@ void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& g
     auto& rb = grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)];
     const bool a_done = done.count({s.panel_a, s.edge_a}) > 0, b_done = done.count({s.panel_b, s.edge_b}) > 0;
     if ((a_done && b_done) || &ra == &rb) continue;
-    snap_seam_ends(pat, s, h, grids, a_done, b_done);
+    snap_seam_ends(pat, s, h, grids, done);
     const bool a_fixed = a_done || (!b_done && ra.size() <= rb.size());
     auto& fixed = a_fixed ? ra : rb;
     auto& free_run = a_fixed ? rb : ra;

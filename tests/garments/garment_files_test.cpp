@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -177,6 +179,28 @@ TEST(GarmentFiles, SidesAndShouldersSewnPointToPoint) {
     SCOPED_TRACE(file);
     const Pattern pat = load_pattern(kGarments + file + ".pattern");
     for (double spacing : {3.1, 2.0, 1.7}) check_meshed(pat, mesh_pattern(pat, spacing), 1e-6);
+  }
+}
+
+// Seams chained through shared corners (a shoulder seam and the two sleeve-cap seams ending at one
+// shoulder point) must never draw two vertices of a panel that a spring joins onto one point: that
+// spring would be squeezed to nothing and the seam gap would stop at millimetres (dress_sleeves at 2300
+// vertices: the armhole's last vertex lay 5 mm short of the corner another seam had snapped a vertex to).
+TEST(GarmentFiles, SeamsNeverSewASpringShut) {
+  for (const char* file : {"shirt_sleeves", "dress_sleeves"}) {  // where three seams end at one corner
+    const Pattern pat = load_pattern(kGarments + file + ".pattern");
+    for (const int target : {300, 600, 1800, 2300}) {  // each failed for one of the two before the fix
+      const MeshedPattern m = mesh_to(pat, target);
+      std::vector<int> root(static_cast<std::size_t>(m.mesh.vertex_count()));  // union-find over seam pairs
+      std::iota(root.begin(), root.end(), 0);
+      std::function<int(int)> find = [&](int v) { return root[v] == v ? v : root[v] = find(root[v]); };
+      for (Eigen::Index k = 0; k < m.mesh.seam_pairs.cols(); ++k)
+        root[find(m.mesh.seam_pairs(0, k))] = find(m.mesh.seam_pairs(1, k));
+      for (Eigen::Index s = 0; s < m.mesh.springs.cols(); ++s)
+        EXPECT_NE(find(m.mesh.springs(0, s)), find(m.mesh.springs(1, s)))
+            << file << " at " << target << " vertices: the seams join the ends of spring " << s << " (uv "
+            << m.uv.col(m.mesh.springs(0, s)).transpose() << " and " << m.uv.col(m.mesh.springs(1, s)).transpose() << ")";
+    }
   }
 }
 
