@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <random>
 #include <vector>
 
 #include "clothbench/io/body_loader.hpp"
@@ -110,7 +111,14 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
     options.spacing_cm = g.vertices > 0 ? 0 : g.spacing_cm;
     options.attach = g.attach;
     try {
-      cloth.append(build_garment(pattern, options, body));
+      ClothMesh garment = build_garment(pattern, options, body);
+      if (g.jitter_mm > 0) {  // a jittered placement: one random offset for the whole garment, from its seed
+        std::mt19937 rng(static_cast<std::mt19937::result_type>(g.seed));
+        std::uniform_real_distribution<Real> u(Real(-g.jitter_mm * 1e-3), Real(g.jitter_mm * 1e-3));
+        const Vec3 offset(u(rng), u(rng), u(rng));
+        garment.positions.colwise() += offset;
+      }
+      cloth.append(garment);
     } catch (const std::invalid_argument& e) {
       throw InputError(located(resolve_scene_path(scene, g.file), 0, e.what()));
     }

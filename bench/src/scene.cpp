@@ -168,6 +168,8 @@ void read_garment(Section s, GarmentSpec& g) {
   s.number("vertices", g.vertices, 0, 1e6);
   s.number("spacing_cm", g.spacing_cm, 0.05, 100);
   s.flag("attach", g.attach);
+  s.number("jitter_mm", g.jitter_mm, 0, 100);
+  s.number("seed", g.seed, 0, 1e9);
   s.finish();
 }
 
@@ -378,7 +380,7 @@ std::string body_config(const BodySpec& b) {
 
 std::string garment_config(const GarmentSpec& g) {
   ConfigWriter w("garment");
-  w("file", g.file)("vertices", g.vertices)("spacing_cm", g.spacing_cm)("attach", g.attach);
+  w("file", g.file)("vertices", g.vertices)("spacing_cm", g.spacing_cm)("attach", g.attach)("jitter_mm", g.jitter_mm)("seed", g.seed);
   return w.str();
 }
 

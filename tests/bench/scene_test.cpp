@@ -176,6 +176,17 @@ TEST(Scene, BodySkinIsReadAndMustStayBelowTheHitDistance) {
   EXPECT_NE(error_of("[body]\nskin_mm = -1\n").find("body.skin_mm"), std::string::npos);
 }
 
+// issue 20: jittered placements for claims' spread
+TEST(Scene, GarmentJitterAndSeedAreReadAndHashed) {
+  const std::string text = "[[garment]]\nfile = \"a.pattern\"\njitter_mm = 5\nseed = 3\n";
+  const Scene s = parse_scene(text, "s.toml");
+  ASSERT_EQ(s.garments.size(), 1u);
+  EXPECT_EQ(s.garments[0].jitter_mm, 5);
+  EXPECT_EQ(s.garments[0].seed, 3);
+  EXPECT_NE(config_hash(s), config_hash(parse_scene(text, "s.toml", {"garment.seed=4"})));
+  EXPECT_NE(error_of(text, {"garment.jitter_mm=-1"}).find("garment.jitter_mm"), std::string::npos);
+}
+
 TEST(Scene, MissingFileAndPathResolution) {
   EXPECT_THROW(load_scene("/nonexistent/scene.toml"), InputError);
   Scene s;
