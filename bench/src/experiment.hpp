@@ -33,6 +33,14 @@ inline std::string regime_suffix(const std::string& regime, const std::string& s
   return regime == "stable" ? "" : sep + regime;
 }
 
+/// Issue 20: the paper tables run image space with the papers' own test by default: the z comparison along the view
+/// axis (dressing Eq. 9, walking Eq. 12) on 8-bit colour maps (dressing Eqs. 6-7, walking Eqs. 9-10); rows named
+/// "ours" run our default (the tangent-plane refinement on float maps). Empty for any other collider.
+inline std::vector<std::string> papers_image_space(const std::string& collider) {
+  if (collider.rfind("is-", 0) != 0) return {};
+  return {"collider.tangent_plane=false", "collider.float_maps=false"};
+}
+
 /// What an experiment may use: cached scene runs, output writers, the options of the command.
 class ExperimentContext {
  public:
