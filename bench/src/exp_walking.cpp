@@ -85,7 +85,10 @@ std::vector<WalkVariant> walk_variants() {
   v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some});
   v.push_back({"papers", "walk_07_01", "papers", "/papers", {}, all});
   const std::vector<std::string> is_cpu{"is-cpu"};
-  v.push_back({"stable, the papers' front/back maps", "walk_07_01", "stable", "/2views", {"collider.views=2"}, is_cpu});
+  std::vector<std::string> papers_is{"collider.views=2"};
+  for (const auto& o : papers_image_space("is-cpu")) papers_is.push_back(o);
+  v.push_back({"stable, the papers' image space (front/back, z test, 8-bit)", "walk_07_01", "stable", "/papers-is",
+               papers_is, is_cpu});
   v.push_back({"stable, no skin", "walk_07_01", "stable", "/noskin", {"body.skin_mm=0"}, is_cpu});
   v.push_back({"stable, no push-out", "walk_07_01", "stable", "/nopush", {"solver.push_out=false"}, is_cpu});
   v.push_back({"stable, without Eq. 16", "walk_07_01", "stable", "/noeq16", {"solver.reaction_force=false"}, is_cpu});
@@ -242,7 +245,7 @@ void walking_t2(ExperimentContext& ctx) {
       "straight springs between resting vertices (3.3 cm long at the papers' 672-vertex skirt) from cutting the "
       "curved surface they lie on (L^2 / 8R = 2.7 mm on a 5 cm thigh); image space renders the cube of six views "
       "(`collider.views = 6`): with the papers' front/back pair the swinging hands hide the hips and the cloth "
-      "caught between is pushed the wrong way. Each of these has an ablation row (is-cpu, walk_07_01), and "
+      "caught between is pushed the wrong way (the ablation row runs the papers' image space whole: the front/back pair, the z comparison of walking Eq. 12 on 8-bit maps). Each of these has an ablation row (is-cpu, walk_07_01), and "
       "\"travelling\" keeps the root's motion (the maps follow the body).\n\n" +
           t.str() + "\n" + charts +
           (media.empty()
