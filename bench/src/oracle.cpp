@@ -12,7 +12,7 @@
 #include "clothbench/sim/timer.hpp"
 
 #ifdef CLOTHBENCH_WITH_EMBREE
-#include "clothbench/collide_os/embree_collider.hpp"
+#include "clothbench/collide_os/embree_distance.hpp"
 #endif
 
 namespace clothbench {

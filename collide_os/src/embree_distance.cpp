@@ -2,7 +2,7 @@
 #include <cmath>
 #include <limits>
 
-#include "clothbench/collide_os/embree_collider.hpp"
+#include "clothbench/collide_os/embree_distance.hpp"
 #include "embree_scene.hpp"
 #include "object_space.hpp"
 

@@ -1,5 +1,6 @@
 // Embree specifics: worker threads, and the exact signed distance the oracle uses.
 #include "clothbench/collide_os/embree_collider.hpp"
+#include "clothbench/collide_os/embree_distance.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "clothbench/collide_os/embree_collider.hpp"
+#include "clothbench/collide_os/embree_distance.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "oracle.hpp"

@@ -1,9 +1,8 @@
 #pragma once
-/// `embree`: object-space collider on an Embree BVH with rtcPointQuery closest points, and the
-/// exact signed distance the accuracy oracle uses. Both share one scene wrapper over a shared
-/// float vertex buffer: a static body is built at quality HIGH; once it moves, a dynamic scene
+/// `embree`: object-space collider on an Embree BVH with rtcPointQuery closest points. It shares
+/// one scene wrapper over a shared float vertex buffer with EmbreeDistance (embree_distance.hpp),
+/// the exact signed distance of the accuracy oracle: a static body is built at quality HIGH; once it moves, a dynamic scene
 /// (build quality LOW, geometry REFIT) is refitted per frame. Answers equal `brute`'s (same closest-point, sign and interpolation code).
-#include <cstdint>
 #include <memory>
 
 #include "clothbench/sim/collider.hpp"
@@ -43,36 +42,5 @@ class EmbreeCollider final : public Collider {
 
 /// Factory used by the registry (name "embree").
 std::unique_ptr<Collider> make_embree_collider(const ColliderOptions& options);
-
-/// Exact signed distance to a closed body, for the accuracy oracle (DESIGN.md): closest point
-/// over the whole body (unbounded radius), sign from angle-weighted pseudo-normals; and exact
-/// segment-surface crossings (cloth springs through body triangles).
-/// One thread. Non-copyable, movable.
-class EmbreeDistance {
- public:
-  EmbreeDistance();
-  ~EmbreeDistance();
-  EmbreeDistance(EmbreeDistance&&) noexcept;
-  EmbreeDistance& operator=(EmbreeDistance&&) noexcept;
-  EmbreeDistance(const EmbreeDistance&) = delete;
-  EmbreeDistance& operator=(const EmbreeDistance&) = delete;
-
-  /// Builds the BVH; throws std::invalid_argument for a malformed body (see validate_body).
-  void set_body(const BodyFrame& body);
-  /// Refits to new positions (same topology); throws std::invalid_argument otherwise.
-  void update_body(const BodyFrame& body);
-  /// depth_out[i] = signed distance of points[i] to the surface [m], < 0 inside; NaN for a
-  /// non-finite point or before set_body. depth_out holds points.count values.
-  void signed_distance(PointsView points, Real* depth_out) const;
-  /// Segments against the body surface, one Embree occlusion ray each: crosses_out[k] = 1 when
-  /// the closed segment from vertices[segments(0, k)] to vertices[segments(1, k)] [m] meets a
-  /// body triangle, else 0 (also for a zero-length or non-finite segment, or before set_body).
-  /// Indices must lie in [0, vertices.count); crosses_out holds segments.cols() values.
-  void segment_crossings(PointsView vertices, const Pairs& segments, std::uint8_t* crosses_out) const;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
 
 }  // namespace clothbench
