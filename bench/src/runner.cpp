@@ -321,7 +321,6 @@ bool advance_frame(const BodySource& source, double t, double frame_dt, long ste
   Stopwatch skin;
   source.frame_into(frame, t);
   skinning_ms += skin.ms();
-  if (auto* sphere = dynamic_cast<SphereCollider*>(&collider.inner())) sphere->set_sphere(source.sphere_center(t), frame.velocities.col(0));
   collider.update_body(frame);
   const bool attached = !sim.mesh().attached.empty();
   if (attached && !between) sim.follow_attachments(frame);

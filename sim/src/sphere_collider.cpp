@@ -18,6 +18,13 @@ void SphereCollider::set_sphere(const Vec3& center, const Vec3& velocity) {
   ++stats_.updates;
 }
 
+void SphereCollider::update_body(const BodyFrame& body) {
+  if (body.positions.cols() == 0) return;
+  const Vec3 velocity = body.velocities.cols() == body.positions.cols() ? Vec3(body.velocities.rowwise().mean())
+                                                                          : Vec3::Zero();
+  set_sphere(body.positions.rowwise().mean(), velocity);
+}
+
 void SphereCollider::query(PointsView points, ContactsOut out) {
   Stopwatch sw;
   for (std::size_t i = 0; i < points.count; ++i) {
