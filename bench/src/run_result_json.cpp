@@ -43,10 +43,10 @@ void run_fields(J& j, R& r, F&& f) {
   f(j, "converged", r.converged), f(j, "window_seam_gap_mm", r.window_seam_gap_mm);
 }
 
-// frame samples as rows [t_s, inside_pct, depth_max_mm, crossings_pct, strain_max]
+// frame samples as rows [t_s, inside_pct, depth_max_mm, crossings_pct, strain_max, strain_p99]
 nlohmann::json frames_json(const std::vector<FrameSample>& samples) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const FrameSample& s : samples) rows.push_back({s.t_s, s.inside_pct, s.depth_max_mm, s.crossings_pct, s.strain_max});
+  for (const FrameSample& s : samples) rows.push_back({s.t_s, s.inside_pct, s.depth_max_mm, s.crossings_pct, s.strain_max, s.strain_p99});
   return rows;
 }
 
@@ -54,7 +54,7 @@ std::vector<FrameSample> frames_from_json(const nlohmann::json& rows) {
   std::vector<FrameSample> samples;
   for (const auto& row : rows)
     samples.push_back({row.at(0).get<double>(), row.at(1).get<double>(), row.at(2).get<double>(),
-                       row.at(3).get<double>(), row.at(4).get<double>()});
+                       row.at(3).get<double>(), row.at(4).get<double>(), row.at(5).get<double>()});
   return samples;
 }
 

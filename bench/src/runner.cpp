@@ -376,7 +376,9 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
       r.animate_inside_max_pct = std::max(r.animate_inside_max_pct, a.inside_pct);
       r.animate_depth_max_mm = std::max(r.animate_depth_max_mm, a.depth_max_mm);
       r.animate_crossings_max_pct = std::max(r.animate_crossings_max_pct, a.crossings_pct);
-      r.frame_samples.push_back({t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(sim.strain().max)});
+      const StrainStats strain = sim.strain();
+      r.frame_samples.push_back(
+          {t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});
     }
     if (options.on_frame) options.on_frame(f, t, frame, sim);
     not_animation_ms += outside.ms();

@@ -35,6 +35,7 @@ struct FrameSample {
   double t_s = 0;              ///< animation time [s]
   double inside_pct = 0, depth_max_mm = 0, crossings_pct = 0;
   double strain_max = 0;       ///< largest structural strain, fraction
+  double strain_p99 = 0;       ///< 99th percentile of the structural strains, fraction
 };
 
 /// What a run measured. Times in ms unless named otherwise.

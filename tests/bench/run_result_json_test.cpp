@@ -26,7 +26,7 @@ TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   r.strain_max_where = "spring 4863";
   r.sew_iteration_ms = {0.5f, 0.25f};
   r.converged = true;
-  r.frame_samples = {{1.033, 0.1, 0.5, 0.2, 0.12}, {1.067, 0, 0, 0.05, 0.11}};
+  r.frame_samples = {{1.033, 0.1, 0.5, 0.2, 0.12, 0.08}, {1.067, 0, 0, 0.05, 0.11, 0.07}};
   r.window_seam_gap_mm = 1.5;
   r.divergence = Divergence{13, Phase::kSew, 910, "speed 51 m/s above max_speed"};
   const RunResult b = run_result_from_json(to_json(r));
@@ -40,6 +40,7 @@ TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   EXPECT_FALSE(b.drape.reached);
   ASSERT_EQ(b.frame_samples.size(), 2u);
   EXPECT_EQ(b.frame_samples[1].crossings_pct, 0.05);
+  EXPECT_EQ(b.frame_samples[1].strain_p99, 0.07);
   EXPECT_EQ(b.window_seam_gap_mm, 1.5);
   RunResult none = r;
   none.divergence.reset();
