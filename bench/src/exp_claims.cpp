@@ -88,6 +88,7 @@ Claim iterations_claim(ExperimentContext& ctx) {
   int fewer = 0, more = 0, within = 0, untestable = 0;
   for (const char* regime : kRegimes)
     for (const auto& [scene, vertices] : {std::pair{"dressing/shirt.toml", 1800}, {"dressing/dress.toml", 3840}}) {
+      if (ctx.quick() && vertices > 1800) continue;  // --quick: the shirt only
       const std::vector<long> is = sew_iterations(ctx, scene, vertices, regime, "is-cpu"),
                               os = sew_iterations(ctx, scene, vertices, regime, "embree");
  const std::string garment = std::filesystem::path(scene).stem().string();
@@ -177,6 +178,7 @@ Claim speed_claim(ExperimentContext& ctx) {
   // the spread (issue 20): embree / is-cpu CD&R per iteration over the iterations claim's five placements
   double spread_lo = 1e300, spread_hi = 0;
   for (const auto& [scene, vertices] : {std::pair{"dressing/shirt.toml", 1800}, {"dressing/dress.toml", 3840}}) {
+    if (ctx.quick() && vertices > 1800) continue;  // --quick: the shirt only
     const auto is = placements(ctx, scene, vertices, "stable", "is-cpu");
     const auto os = placements(ctx, scene, vertices, "stable", "embree");
     if (ctx.colliders({"embree"}).empty()) break;
