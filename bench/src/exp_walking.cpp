@@ -120,9 +120,13 @@ std::vector<std::string> walk_row(const std::string& product, const WalkVariant&
   const double frames = double(std::max(1L, r.frames));
   std::vector<std::string> row{product, v.label, v.clip, collider, std::to_string(r.vertices), std::to_string(r.frames),
                                num(r.steps_per_frame, 0) + " at " + num(1e3 * r.dt_s, 3) + " ms"};
-  if (!dressed(r)) {
+  // no measured frame: the run diverged while dressing or in the lead-in
+  if (r.frames == 0 || !dressed(r)) {
     for (int i = 0; i < 10; ++i) row.push_back("-");
-    row.push_back("no: not dressed, seam gap " + num(r.window_seam_gap_mm, 1) + " mm when the walk starts");
+    row.push_back(r.frames == 0 && r.divergence
+                      ? "no: diverged before the walk (" + std::string(to_string(r.divergence->phase)) +
+                            ", iteration " + std::to_string(r.divergence->iteration) + ")"
+                      : "no: not dressed, seam gap " + num(r.window_seam_gap_mm, 1) + " mm when the walk starts");
     return row;
   }
   const double s_per_frame = r.animate.wall_ms / 1e3 / frames;
