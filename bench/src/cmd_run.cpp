@@ -94,10 +94,11 @@ void print_summary(const RunArgs& a, const RunResult& r) {
     std::printf("  seam gap when the measured window starts %.2f mm\n", r.window_seam_gap_mm);
   if (r.frames > 0 && a.every_frame)
     std::printf(
-        "  worst frame: %.2f %% inside, depth max %.2f mm, crossings %.2f %%; strain max %.1f %% (mean over %zu frames: "
-        "%.2f %% inside, crossings %.2f %%)\n",
-        r.animate_inside_max_pct, r.animate_depth_max_mm, r.animate_crossings_max_pct, 100 * r.animate_strain_max,
-        r.frame_samples.size(), r.frame_mean(&FrameSample::inside_pct), r.frame_mean(&FrameSample::crossings_pct));
+        "  worst frame: %.2f %% inside, depth max %.2f mm, crossings %.2f %%; strain max %.1f %% "
+        "(mean over %zu frames: %.2f %% inside, crossings %.2f %%)\n",
+        r.frame_max(&FrameSample::inside_pct), r.frame_max(&FrameSample::depth_max_mm),
+        r.frame_max(&FrameSample::crossings_pct), 100 * r.animate_strain_max, r.frame_samples.size(),
+        r.frame_mean(&FrameSample::inside_pct), r.frame_mean(&FrameSample::crossings_pct));
   else if (r.frames > 0)
     std::printf("  worst frame: strain max %.1f %% (--every-frame measures inside, depth and crossings too)\n",
                 100 * r.animate_strain_max);

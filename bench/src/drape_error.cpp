@@ -15,19 +15,15 @@ namespace clothbench {
 
 namespace {
 
-// the cloth's surface: its quads as triangles, and a grid of cells (side h) listing the triangles whose box meets them
+// the cloth's surface (ClothMesh::surface_triangles), and a grid of cells (side kCell) listing the triangles whose
+// box meets them
 class Surface {
  public:
-  explicit Surface(const ClothMesh& cloth) : x_(cloth.positions) {
-    for (Eigen::Index q = 0; q < cloth.quads.cols(); ++q) {
-      const auto c = cloth.quads.col(q);
-      add({c(0), c(1), c(2)});
-      if (c(3) != c(2)) add({c(0), c(2), c(3)});
-    }
-    if (tris_.empty()) throw std::invalid_argument("drape_error: a cloth without quads has no surface");
-    for (std::size_t t = 0; t < tris_.size(); ++t) {
+  explicit Surface(const ClothMesh& cloth) : x_(cloth.positions), tris_(cloth.surface_triangles()) {
+    if (tris_.cols() == 0) throw std::invalid_argument("drape_error: a cloth without quads has no surface");
+    for (Eigen::Index t = 0; t < tris_.cols(); ++t) {
       Eigen::AlignedBox3f box;
-      for (int k : tris_[t]) box.extend(x_.col(k));
+      for (int c = 0; c < 3; ++c) box.extend(x_.col(tris_(c, t)));
       const auto lo = cell(box.min()), hi = cell(box.max());
       for (int i = lo[0]; i <= hi[0]; ++i)
         for (int j = lo[1]; j <= hi[1]; ++j)
@@ -49,7 +45,7 @@ class Surface {
             for (int t : it->second) best = std::min(best, squared(p, t));
           }
     if (!(best <= Real(kMaxRing - 1) * kCell))  // farther than the rings reach: every triangle
-      for (std::size_t t = 0; t < tris_.size(); ++t) best = std::min(best, squared(p, static_cast<int>(t)));
+      for (Eigen::Index t = 0; t < tris_.cols(); ++t) best = std::min(best, squared(p, static_cast<int>(t)));
     return std::sqrt(double(best));
   }
 
@@ -63,15 +59,11 @@ class Surface {
   static long long key(const Cell& c) {
     return ((long long)(c[0] & 0xfffff) << 40) | ((long long)(c[1] & 0xfffff) << 20) | (long long)(c[2] & 0xfffff);
   }
-  void add(const std::array<int, 3>& t) {
-    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) tris_.push_back(t);
-  }
   Real squared(const Vec3& p, int t) const {
-    const auto& v = tris_[std::size_t(t)];
-    return closest_point_on_triangle(p, x_.col(v[0]), x_.col(v[1]), x_.col(v[2])).dist2;
+    return closest_point_on_triangle(p, x_.col(tris_(0, t)), x_.col(tris_(1, t)), x_.col(tris_(2, t))).dist2;
   }
   const Points3& x_;
-  std::vector<std::array<int, 3>> tris_;
+  const Tris tris_;
   std::unordered_map<long long, std::vector<int>> grid_;
 };
 

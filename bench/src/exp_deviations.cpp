@@ -77,12 +77,12 @@ std::string effect(const RunResult& ours, const RunResult& off, bool walking) {
   };
   if (ours.divergence) return "ours " + diverged(ours);
   if (off.divergence) return "switched off: " + diverged(off);
-  const double in_a = walking ? ours.animate_inside_max_pct : ours.accuracy.inside_pct;
-  const double in_b = walking ? off.animate_inside_max_pct : off.accuracy.inside_pct;
-  const double d_a = walking ? ours.animate_depth_max_mm : ours.accuracy.depth_max_mm;
-  const double d_b = walking ? off.animate_depth_max_mm : off.accuracy.depth_max_mm;
-  const double x_a = walking ? ours.animate_crossings_max_pct : ours.accuracy.crossings_pct;
-  const double x_b = walking ? off.animate_crossings_max_pct : off.accuracy.crossings_pct;
+  const double in_a = walking ? ours.frame_max(&FrameSample::inside_pct) : ours.accuracy.inside_pct;
+  const double in_b = walking ? off.frame_max(&FrameSample::inside_pct) : off.accuracy.inside_pct;
+  const double d_a = walking ? ours.frame_max(&FrameSample::depth_max_mm) : ours.accuracy.depth_max_mm;
+  const double d_b = walking ? off.frame_max(&FrameSample::depth_max_mm) : off.accuracy.depth_max_mm;
+  const double x_a = walking ? ours.frame_max(&FrameSample::crossings_pct) : ours.accuracy.crossings_pct;
+  const double x_b = walking ? off.frame_max(&FrameSample::crossings_pct) : off.accuracy.crossings_pct;
   return "inside " + pair(in_a, in_b, 2) + " %, depth " + pair(d_a, d_b, 1) + " mm, crossings " + pair(x_a, x_b, 2) +
          " %, strain max " +
          pair(100 * (walking ? ours.animate_strain_max : ours.strain_max),

@@ -57,23 +57,29 @@ const T1Garment kT1[] = {{"shirt", "dressing/shirt.toml", 1800}, {"dress", "dres
 // the reproduce budget (20 minutes on 2 cores) allows 1 s of simulated time per Table 1 run
 const std::vector<std::string> kT1Budget{"stop.sew_max_s=0.6", "stop.drape_max_s=0.4"};
 
-// image space with the papers' test unless `ours` (papers_image_space)
-const RunResult& t1_run(ExperimentContext& ctx, const T1Garment& g, const std::string& collider,
-                        const std::string& regime = "stable", bool ours = false) {
+// a paper table's collider entry: image space with the papers' test (papers_image_space), or with ours
+struct Variant {
+  std::string collider;
+  bool ours = false;
+  std::string label() const { return collider + (ours ? " (ours)" : ""); }
+  std::string suffix() const { return ours ? "/ours" : ""; }
+  // `sets` with what the entry adds to the scene
+  std::vector<std::string> with(std::vector<std::string> sets) const {
+    if (!ours)
+      for (const auto& o : papers_image_space(collider)) sets.push_back(o);
+    return sets;
+  }
+};
+
+const RunResult& t1_run(ExperimentContext& ctx, const T1Garment& g, const Variant& v,
+                        const std::string& regime = "stable") {
   std::vector<std::string> sets = kT1Budget;
   sets.push_back("garment.vertices=" + std::to_string(g.vertices));
   sets.push_back("solver.regime=" + regime);
-  if (!ours) for (const auto& o : papers_image_space(collider)) sets.push_back(o);
-  return ctx.run(g.scene, collider, with_quick(ctx, sets));
+  return ctx.run(g.scene, v.collider, with_quick(ctx, v.with(sets)));
 }
 
-// a paper table's collider entries: every collider, and image space once more with our test ("ours")
-struct Variant {
-  std::string collider;
-  bool ours;
-  std::string label() const { return collider + (ours ? " (ours)" : ""); }
-  std::string suffix() const { return ours ? "/ours" : ""; }
-};
+// every collider, and image space once more with our test ("ours")
 std::vector<Variant> with_ours(const std::vector<std::string>& colliders) {
   std::vector<Variant> v;
   for (const auto& c : colliders) v.push_back({c, false});
@@ -112,27 +118,27 @@ void dressing_t1(ExperimentContext& ctx) {
   std::string gltf;
   for (const auto& g : kT1) {
     for (const std::string regime : kRegimes)
-    for (const auto& [c, ours] : with_ours(ctx.colliders(kAll))) {
-      const RunResult& r = t1_run(ctx, g, c, regime, ours);
-      const auto& p = paper::kDressingT1[(g.product == std::string("shirt") ? 0 : 2) + (image_space(c) ? 0 : 1)];
-      t.row({g.product, regime, Variant{c, ours}.label(), std::to_string(r.vertices), iterations_cell(r), num(r.total_s(), 2),
-             num(r.ms_per_iteration(), 3), num(r.cdr_ms_per_iteration(), 3), p.method, std::to_string(p.iterations),
-             num(p.total_s, 1), num(p.ms_per_iteration, 1), num(r.ms_per_iteration() / p.ms_per_iteration, 3),
-             accuracy_cells(r), r.converged ? "yes" : "no", limits_cell(r)});
-      ctx.add_run(r, std::string("dressing-t1/") + g.product + "/" + c + regime_suffix(regime, "/") +
-                         Variant{c, ours}.suffix());
-      if (ours) continue;
-      if (c == "is-cpu") pictures.push_back(regime_picture(ctx, r, "dressing-t1", g.product, regime));
-      if (c == "is-cpu" && regime == "stable" && g.product == std::string("dress")) {
-        export_viewer_gltf(ctx.path("pictures/dressing-t1-dress.glb"), r.final_body, r.mesh);
-        gltf = "; the dress as binary glTF: [dressing-t1-dress.glb](pictures/dressing-t1-dress.glb)";
+      for (const Variant& v : with_ours(ctx.colliders(kAll))) {
+        const std::string& c = v.collider;
+        const RunResult& r = t1_run(ctx, g, v, regime);
+        const auto& p = paper::kDressingT1[(g.product == std::string("shirt") ? 0 : 2) + (image_space(c) ? 0 : 1)];
+        t.row({g.product, regime, v.label(), std::to_string(r.vertices), iterations_cell(r), num(r.total_s(), 2),
+               num(r.ms_per_iteration(), 3), num(r.cdr_ms_per_iteration(), 3), p.method, std::to_string(p.iterations),
+               num(p.total_s, 1), num(p.ms_per_iteration, 1), num(r.ms_per_iteration() / p.ms_per_iteration, 3),
+               accuracy_cells(r), r.converged ? "yes" : "no", limits_cell(r)});
+        ctx.add_run(r, std::string("dressing-t1/") + g.product + "/" + c + regime_suffix(regime, "/") + v.suffix());
+        if (v.ours) continue;
+        if (c == "is-cpu") pictures.push_back(regime_picture(ctx, r, "dressing-t1", g.product, regime));
+        if (c == "is-cpu" && regime == "stable" && g.product == std::string("dress")) {
+          export_viewer_gltf(ctx.path("pictures/dressing-t1-dress.glb"), r.final_body, r.mesh);
+          gltf = "; the dress as binary glTF: [dressing-t1-dress.glb](pictures/dressing-t1-dress.glb)";
+        }
       }
-    }
     const auto& wp = paper::kWalkingT1[g.product == std::string("shirt") ? 0 : 2];
     const auto& wo = paper::kWalkingT1[g.product == std::string("shirt") ? 1 : 3];
     for (const auto& is : ctx.colliders({"is-gl", "is-cpu"}))
       for (const auto& os : ctx.colliders({"fcl", "embree", "vdb", "bbtree"})) {
-        const double a = t1_run(ctx, g, is).cdr_ms_per_iteration(), b = t1_run(ctx, g, os).cdr_ms_per_iteration();
+        const double a = t1_run(ctx, g, {is}).cdr_ms_per_iteration(), b = t1_run(ctx, g, {os}).cdr_ms_per_iteration();
         rt.row({g.product, is, os, num(a / b, 4), num(b / a, 0) + "x", num(wp.cdr_ms / wo.cdr_ms, 2)});
       }
   }
@@ -155,16 +161,17 @@ void walking_t1(ExperimentContext& ctx) {
   MarkdownTable t({"garment", "collider", "vertices", "ms/iteration", "CD&R ms", "CS ms", "CD&R %", "CS %", "paper",
                    "paper ms/it", "paper CD&R ms", "paper CS ms", "paper CD&R %", "paper CS %", "inside [%]"});
   for (const auto& g : kT1)
-    for (const auto& [c, ours] : with_ours(ctx.colliders(kAll))) {
-      const RunResult& r = t1_run(ctx, g, c, "stable", ours);
-      const auto& p = paper::kWalkingT1[(g.product == std::string("shirt") ? 0 : 2) + (image_space(c) ? 0 : 1)];
+    for (const Variant& v : with_ours(ctx.colliders(kAll))) {
+      const RunResult& r = t1_run(ctx, g, v);
+      const auto& p =
+          paper::kWalkingT1[(g.product == std::string("shirt") ? 0 : 2) + (image_space(v.collider) ? 0 : 1)];
       const double total = r.ms_per_iteration();
-      t.row({g.product, Variant{c, ours}.label(), std::to_string(r.vertices), num(total, 3), num(r.cdr_ms_per_iteration(), 3),
+      t.row({g.product, v.label(), std::to_string(r.vertices), num(total, 3), num(r.cdr_ms_per_iteration(), 3),
              num(r.cs_ms_per_iteration(), 3), num(100 * r.cdr_ms_per_iteration() / total, 1),
              num(100 * r.cs_ms_per_iteration() / total, 1), p.method, num(p.ms_per_iteration, 1), num(p.cdr_ms, 1),
              num(p.cs_ms, 1), num(p.cdr_pct, 1), num(p.cs_pct, 1),
              r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2)});
-      ctx.add_run(r, std::string("walking-t1/") + g.product + "/" + c + Variant{c, ours}.suffix());
+      ctx.add_run(r, std::string("walking-t1/") + g.product + "/" + v.collider + v.suffix());
     }
   ctx.write("walking-t1", "Walking paper Table 1: CD&R vs CS time",
             "The runs of dressing-t1 (static body), split into collision detection and response (CD&R: collider "
@@ -192,20 +199,20 @@ void dressing_t2(ExperimentContext& ctx) {
   for (std::size_t i = 0; i < 4; ++i) {
     const auto& g = garments[i];
     for (const std::string regime : kRegimes)
-    for (const auto& [c, ours] : with_ours(ctx.colliders({"is-gl", "is-cpu"}))) {
-      std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices), "solver.face_queries=true",
-                                    "solver.regime=" + regime};
-      if (!ours) for (const auto& o : papers_image_space(c)) sets.push_back(o);
-      const RunResult& r = ctx.run(g.scene, c, with_quick(ctx, sets));
-      const auto& p = paper::kDressingT2[i];
-      t.row({g.product, regime, Variant{c, ours}.label(), std::to_string(r.vertices), std::to_string(r.query_points), iterations_cell(r),
-             num(r.total_s(), 2), num(r.ms_per_iteration(), 3), std::to_string(p.vertices),
-             std::to_string(p.iterations), num(p.total_s, 3), num(p.ms_per_iteration, 1), accuracy_cells(r),
-             r.converged ? "yes" : "no", limits_cell(r)});
-      ctx.add_run(r, std::string("dressing-t2/") + g.product + "/" + c + regime_suffix(regime, "/") +
-                         Variant{c, ours}.suffix());
-      if (c == "is-cpu" && !ours) pictures.push_back(regime_picture(ctx, r, "dressing-t2", g.product, regime));
-    }
+      for (const Variant& v : with_ours(ctx.colliders({"is-gl", "is-cpu"}))) {
+        const RunResult& r = ctx.run(g.scene, v.collider,
+                                     with_quick(ctx, v.with({"garment.vertices=" + std::to_string(g.vertices),
+                                                             "solver.face_queries=true", "solver.regime=" + regime})));
+        const auto& p = paper::kDressingT2[i];
+        t.row({g.product, regime, v.label(), std::to_string(r.vertices), std::to_string(r.query_points),
+               iterations_cell(r), num(r.total_s(), 2), num(r.ms_per_iteration(), 3), std::to_string(p.vertices),
+               std::to_string(p.iterations), num(p.total_s, 3), num(p.ms_per_iteration, 1), accuracy_cells(r),
+               r.converged ? "yes" : "no", limits_cell(r)});
+        ctx.add_run(
+            r, std::string("dressing-t2/") + g.product + "/" + v.collider + regime_suffix(regime, "/") + v.suffix());
+        if (v.collider == "is-cpu" && !v.ours)
+          pictures.push_back(regime_picture(ctx, r, "dressing-t2", g.product, regime));
+      }
   }
   ctx.write("dressing-t2", "Dressing paper Table 2: minimum vertices with face-body collisions",
             "The papers' minimum vertex counts (trousers: 4 x 150 = 600 here, the paper's 560 is not a multiple of "

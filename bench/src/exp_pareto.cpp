@@ -7,7 +7,6 @@
 
 #include "drape_error.hpp"
 #include "experiment.hpp"
-#include "registry.hpp"
 #include "report.hpp"
 
 namespace clothbench {
@@ -75,13 +74,7 @@ struct Reference {
   ClothMesh mesh;
 };
 Reference reference_drape(ExperimentContext& ctx, const Garment& g) {
-  const auto built = available_colliders();
-  std::string exact = "brute";
-  for (const char* c : {"embree", "fcl"})
-    if (std::find(built.begin(), built.end(), c) != built.end()) {
-      exact = c;
-      break;
-    }
+  const std::string exact = ctx.colliders({"embree", "fcl", "brute"}).front();  // brute is always built
   const int n = ctx.quick() ? g.sizes.back() : 2 * g.sizes.back();
   const RunResult& r = ctx.run(g.scene, exact, sets_for(ctx, n, {}));
   ctx.add_run(r, std::string("pareto/") + g.name + "/reference " + exact + "/" + std::to_string(n));

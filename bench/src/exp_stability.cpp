@@ -90,19 +90,18 @@ std::string speed_boundaries(ExperimentContext& ctx) {
                                           "stop.drape_max_s=0.6", "body.velocity=[" + std::to_string(speeds[i]) + ", 0, 0]"};
       const RunResult& r = ctx.run(kTablecloth, c, sets, per_frame);
       ctx.add_run(r, "stability/speed/" + c + "/" + num(speeds[i], 1));
-      if (c == "sphere") reference.push_back(r.animate_inside_max_pct);
-      if (c == "sphere") reference_crossings.push_back(r.animate_crossings_max_pct);
-      const bool sinks = r.animate_inside_max_pct > reference[i] + kInsideLimitPct;
-      const bool tunnels = r.animate_crossings_max_pct > reference_crossings[i] + kCrossingsExcessPct;
-      insides += (insides.empty() ? "" : ", ") + (r.divergence ? std::string("div") : num(r.animate_inside_max_pct, 1));
-      crossings +=
-          (crossings.empty() ? "" : ", ") + (r.divergence ? std::string("div") : num(r.animate_crossings_max_pct, 1));
+      const double inside = r.frame_max(&FrameSample::inside_pct), crossed = r.frame_max(&FrameSample::crossings_pct);
+      if (c == "sphere") reference.push_back(inside), reference_crossings.push_back(crossed);
+      const bool sinks = inside > reference[i] + kInsideLimitPct;
+      const bool tunnels = crossed > reference_crossings[i] + kCrossingsExcessPct;
+      insides += (insides.empty() ? "" : ", ") + (r.divergence ? std::string("div") : num(inside, 1));
+      crossings += (crossings.empty() ? "" : ", ") + (r.divergence ? std::string("div") : num(crossed, 1));
       if (!(r.divergence || sinks || tunnels) && failure == "none up to 8 m/s") ok_speed = speeds[i];
       if ((r.divergence || sinks || tunnels) && failure == "none up to 8 m/s")
         failure = num(speeds[i], 1) + " m/s: " +
                   (r.divergence ? "diverged"
-                   : sinks      ? num(r.animate_inside_max_pct, 1) + " % inside"
-                                : num(r.animate_crossings_max_pct, 1) + " % crossings");
+                   : sinks      ? num(inside, 1) + " % inside"
+                                : num(crossed, 1) + " % crossings");
     }
     t.row({c, ok_speed > 0 ? num(ok_speed, 1) : "< 0.5", failure, insides, crossings});
   }

@@ -100,15 +100,8 @@ std::vector<WalkVariant> walk_variants() {
 }
 
 // "worst / mean" of a per-frame figure
-std::string worst_mean(const RunResult& r, double worst, double FrameSample::*field, int digits) {
-  return num(worst, digits) + " / " + num(r.frame_mean(field), digits);
-}
-
-// the largest per-frame 99th percentile of strain: how far the rest of the cloth is from the worst spring
-double worst_p99(const RunResult& r) {
-  double p = 0;
-  for (const FrameSample& f : r.frame_samples) p = std::max(p, f.strain_p99);
-  return p;
+std::string worst_mean(const RunResult& r, double FrameSample::*field, int digits) {
+  return num(r.frame_max(field), digits) + " / " + num(r.frame_mean(field), digits);
 }
 
 // a garment is dressed when its seams were sewn before the measured walk starts
@@ -132,13 +125,14 @@ std::vector<std::string> walk_row(const std::string& product, const WalkVariant&
   const double s_per_frame = r.animate.wall_ms / 1e3 / frames;
   const double cloth_ms = (r.animate.cdr_ms + r.animate.cs_ms) / frames;
   const bool ok = !r.divergence;
-  row.insert(row.end(), {num(s_per_frame, 4), num(1 / s_per_frame, 1), num(r.skinning_ms / frames, 2),
-                         num(r.collider_update_ms / frames, 2), num(cloth_ms, 2),
-                         num(p.s_per_frame, 3) + " / " + num(p.fps, 1),
-                         ok ? worst_mean(r, r.animate_inside_max_pct, &FrameSample::inside_pct, 2) : "diverged",
-                         ok ? num(r.animate_depth_max_mm, 1) : "-",
-                         ok ? worst_mean(r, r.animate_crossings_max_pct, &FrameSample::crossings_pct, 2) : "-",
-                         num(100 * r.animate_strain_max, 1) + " / " + num(100 * worst_p99(r), 1), limits_cell(r)});
+  row.insert(row.end(),
+             {num(s_per_frame, 4), num(1 / s_per_frame, 1), num(r.skinning_ms / frames, 2),
+              num(r.collider_update_ms / frames, 2), num(cloth_ms, 2), num(p.s_per_frame, 3) + " / " + num(p.fps, 1),
+              ok ? worst_mean(r, &FrameSample::inside_pct, 2) : "diverged",
+              ok ? num(r.frame_max(&FrameSample::depth_max_mm), 1) : "-",
+              ok ? worst_mean(r, &FrameSample::crossings_pct, 2) : "-",
+              num(100 * r.animate_strain_max, 1) + " / " + num(100 * r.frame_max(&FrameSample::strain_p99), 1),
+              limits_cell(r)});
   return row;
 }
 
@@ -270,11 +264,9 @@ void walking_t2(ExperimentContext& ctx) {
                                 models + ".\n"));
 }
 
-// how far the cloth's centre trails the sphere's centre along the motion [m]
-double lag(const RunResult& r, const Vec3& direction) {
-  const Vec3 cloth = r.mesh.positions.rowwise().mean();
-  const Vec3 sphere = bounding_box(r.final_body.positions).center();
-  return double((sphere - cloth).dot(direction.normalized()));
+// how far the cloth's centre trails the sphere's centre along +x, the motion [cm]
+double lag_cm(const Points3& cloth, const BodyFrame& sphere) {
+  return 100 * double(bounding_box(sphere.positions).center().x() - cloth.rowwise().mean().x());
 }
 
 // the share of the cloth's vertices within the collider's tol of the body (touching it) [%]
@@ -305,9 +297,8 @@ void walking_f8(ExperimentContext& ctx) {
     RunOptions options;
     options.on_frame = [&](long frame, double at, const BodyFrame& body, const Simulator& sim) {
       if (frame == 1) times.clear(), lags.clear(), touching.clear();
-      const Vec3 cloth = sim.positions().rowwise().mean(), sphere = bounding_box(body.positions).center();
       times.push_back(at);
-      lags.push_back(100 * double(sphere.x() - cloth.x()));
+      lags.push_back(lag_cm(sim.positions(), body));
       touching.push_back(touching_pct(body, sim.positions(), tol));
     };
     const RunResult& r = ctx.run("walking/tablecloth_sphere.toml", "sphere", sets, options);
@@ -316,12 +307,12 @@ void walking_f8(ExperimentContext& ctx) {
                                       : "ok";
     const auto end_value = [&](double v) { return r.divergence ? std::string("-") : num(100 * v, 1); };
     t.row({label, "5 %", r.frames ? num(100 * r.animate_strain_max, 1) : "-", end_value(r.strain_max),
-           end_value(r.strain_p99), r.divergence ? "-" : num(100 * lag(r, Vec3::UnitX()), 1),
+           end_value(r.strain_p99), r.divergence ? "-" : num(lag_cm(r.mesh.positions, r.final_body), 1),
            r.divergence || touching.empty() ? "-" : num(touching.back(), 1),
            r.divergence ? "-" : num(r.accuracy.inside_pct, 2), status});
     nlohmann::json extra = nlohmann::json::object();
     if (r.frames) extra["animate_strain_max"] = r.animate_strain_max;
-    if (!r.divergence) extra["lag_cm"] = 100 * lag(r, Vec3::UnitX());
+    if (!r.divergence) extra["lag_cm"] = lag_cm(r.mesh.positions, r.final_body);
     ctx.add_run(r, std::string("walking-f8/tablecloth/") + limit, extra);
     if (!times.empty()) {
       lag_series.push_back({{"label", label}, {"x", times}, {"y", lags}, {"style", "-"}});

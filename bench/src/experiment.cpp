@@ -185,10 +185,7 @@ bool ExperimentContext::chart(const std::string& name, nlohmann::json spec) {
   spec["out"] = png;
   const std::string spec_path = png + ".spec.json";
   write_text_file(spec_path, spec.dump());
-  // Debian's interpreter, where python3-matplotlib is installed (not a user's pyenv or venv)
-  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string cmd = python + " '" + std::string(CLOTHBENCH_SOURCE_DIR) + "/bench/plot/plot.py' '" + spec_path + "'";
-  const int rc = std::system(cmd.c_str());
+  const int rc = run_python_script("bench/plot/plot.py", "'" + spec_path + "'");
   std::error_code ec;
   std::filesystem::remove(spec_path, ec);
   if (rc != 0) {

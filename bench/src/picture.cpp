@@ -57,16 +57,6 @@ Camera make_camera(const Box3& box, int height, View view) {
 // light from the upper right, in front of the viewer
 Vec3 light_direction(const Camera& c) { return (0.3f * c.right + 0.5f * c.up + 1.0f * c.toward).normalized(); }
 
-Rgb panel_colour(int panel) {
-  static const std::array<Rgb, 6> colours{
-      {{200, 60, 60}, {60, 110, 200}, {220, 160, 40}, {70, 160, 90}, {150, 80, 180}, {40, 170, 170}}};
-  return colours[std::size_t(std::max(panel, 0)) % colours.size()];
-}
-
-int vertex_panel(const ClothMesh& cloth, Eigen::Index v) {
-  return cloth.panel.empty() ? 0 : cloth.panel[std::size_t(v)];
-}
-
 // the cloth's quads as triangles (0 1 2, 0 2 3)
 Tris quad_triangles(const Quads& quads) {
   Tris t(3, 2 * quads.cols());
@@ -209,6 +199,16 @@ Image render_gl(const BodyFrame& body, const ClothMesh& cloth, const Camera& cam
 #endif
 
 }  // namespace
+
+Rgb panel_colour(int panel) {
+  static const std::array<Rgb, 6> colours{
+      {{200, 60, 60}, {60, 110, 200}, {220, 160, 40}, {70, 160, 90}, {150, 80, 180}, {40, 170, 170}}};
+  return colours[std::size_t(std::max(panel, 0)) % colours.size()];
+}
+
+int vertex_panel(const ClothMesh& cloth, Eigen::Index v) {
+  return cloth.panel.empty() ? 0 : cloth.panel[std::size_t(v)];
+}
 
 PictureRenderer default_picture_renderer() {
 #ifdef CLOTHBENCH_PICTURES_GL

@@ -38,6 +38,10 @@ Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, 
 /// lacks it or no OSMesa context can be created.
 Image render_dressed(const BodyFrame& body, const ClothMesh& cloth, int height, View view, PictureRenderer renderer);
 
+/// The colour of a cloth panel in every picture and 3-D file (a palette of six, repeated).
+Rgb panel_colour(int panel);
+/// The panel of a cloth vertex (0 for a cloth without panels).
+int vertex_panel(const ClothMesh& cloth, Eigen::Index v);
 
 /// Several images side by side (same height), with a 4-pixel white gap.
 Image side_by_side(const std::vector<Image>& images);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,11 @@
 #include "clothbench/io/errors.hpp"
 
 namespace clothbench {
+
+int run_python_script(const std::string& script, const std::string& args) {
+  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  return std::system((python + " '" + std::string(CLOTHBENCH_SOURCE_DIR) + "/" + script + "' " + args).c_str());
+}
 
 std::string command_output(const std::string& command, int* status) {
   FILE* pipe = popen(command.c_str(), "r");
@@ -63,11 +69,11 @@ std::vector<LimitCheck> limit_checks(const RunResult& r, bool with_strain) {
   // an animated run is judged by its worst frame (those measured: RunOptions::measure_frames; strain at every
   // frame) as well as its end state
   const auto worst = [&](double end, double frames) { return std::max(end, frames); };
-  std::vector<LimitCheck> checks{{"inside", worst(r.accuracy.inside_pct, r.animate_inside_max_pct), l.inside_pct, "%"},
-                                 {"depth", worst(r.accuracy.depth_max_mm, r.animate_depth_max_mm), l.depth_mm, "mm"},
-                                 {"crossings", worst(r.accuracy.crossings_pct, r.animate_crossings_max_pct),
-                                  l.crossings_pct, "%"},
-                                 {"seam gap", r.seam_gap_max_mm, l.seam_gap_mm, "mm"}};
+  std::vector<LimitCheck> checks{
+      {"inside", worst(r.accuracy.inside_pct, r.frame_max(&FrameSample::inside_pct)), l.inside_pct, "%"},
+      {"depth", worst(r.accuracy.depth_max_mm, r.frame_max(&FrameSample::depth_max_mm)), l.depth_mm, "mm"},
+      {"crossings", worst(r.accuracy.crossings_pct, r.frame_max(&FrameSample::crossings_pct)), l.crossings_pct, "%"},
+      {"seam gap", r.seam_gap_max_mm, l.seam_gap_mm, "mm"}};
   if (with_strain && r.strain_threshold > 0)
     checks.push_back({"strain", 100 * worst(r.strain_max, r.animate_strain_max),
                       100 * (r.strain_threshold + l.strain_excess), "%"});

@@ -74,6 +74,11 @@ nlohmann::json read_json_file(const std::string& path);
 /// status (-1 when the command could not be started).
 std::string command_output(const std::string& command, int* status = nullptr);
 
+/// Runs the source tree's Python script SCRIPT (relative to the repository) with `args` (already quoted) under
+/// Debian's interpreter where it exists (where python3-matplotlib and the libjs packages' users live, not a
+/// user's pyenv or venv); returns the command's exit status (0 = success).
+int run_python_script(const std::string& script, const std::string& args);
+
 /// Values of time_unit in 1 ms: ns 1e6, us 1e3, ms 1, s 1e-3; NaN for any other.
 double unit_per_ms(const std::string& unit);
 

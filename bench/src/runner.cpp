@@ -35,6 +35,12 @@ double RunResult::frame_mean(double FrameSample::*field) const {
   return frame_samples.empty() ? 0 : sum / double(frame_samples.size());
 }
 
+double RunResult::frame_max(double FrameSample::*field) const {
+  double m = 0;
+  for (const FrameSample& f : frame_samples) m = std::max(m, f.*field);
+  return m;
+}
+
 const RunResult& median_run(const std::vector<RunResult>& runs) {
   std::vector<const RunResult*> by_time;
   for (const RunResult& r : runs) by_time.push_back(&r);
@@ -373,9 +379,6 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
       const Oracle oracle(frame);
       Accuracy a = oracle.measure(sim.positions());
       oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
-      r.animate_inside_max_pct = std::max(r.animate_inside_max_pct, a.inside_pct);
-      r.animate_depth_max_mm = std::max(r.animate_depth_max_mm, a.depth_max_mm);
-      r.animate_crossings_max_pct = std::max(r.animate_crossings_max_pct, a.crossings_pct);
       const StrainStats strain = sim.strain();
       r.frame_samples.push_back(
           {t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});

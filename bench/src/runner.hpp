@@ -64,10 +64,7 @@ struct RunResult {
   double strain_max = 0, strain_p99 = 0;
   std::string strain_max_where; ///< the most strained structural spring: its ends, height, contacts, seams
   double kinetic_energy = 0;
-  double animate_strain_max = 0;///< largest structural strain seen at any animation frame
-  double animate_inside_max_pct = 0;  ///< RunOptions::measure_frames: most cloth inside the body at any frame [%]
-  double animate_depth_max_mm = 0;    ///< RunOptions::measure_frames: deepest penetration at any frame [mm]
-  double animate_crossings_max_pct = 0;  ///< RunOptions::measure_frames: most structural springs crossing the body at any frame [%]
+  double animate_strain_max = 0;           ///< largest structural strain seen at any animation frame
   std::vector<FrameSample> frame_samples;  ///< RunOptions::measure_frames: every measured animation frame
   double window_seam_gap_mm = 0;      ///< largest seam gap when the measured animation window starts [mm]
   std::vector<float> sew_iteration_ms;  ///< wall time of every sew iteration (RunOptions::trace)
@@ -86,8 +83,10 @@ struct RunResult {
   double limit_ms_per_iteration() const;  ///< of cs: the velocity limits' passes
   /// CPU time of the running thread per iteration over the phases (collider worker threads not counted).
   double cpu_ms_per_iteration() const;
-  /// Mean over frame_samples of a field (0 without samples).
+  /// Mean and largest value over frame_samples of a field (0 without samples): the worst frame's inside,
+  /// depth and crossings are frame_max(&FrameSample::inside_pct) and so on.
   double frame_mean(double FrameSample::*field) const;
+  double frame_max(double FrameSample::*field) const;
 };
 
 /// Of repetitions of one configuration, the run with the median time per iteration (of an even count the

@@ -13,6 +13,7 @@
 
 #include "clothbench/io/errors.hpp"
 #include "oracle.hpp"
+#include "picture.hpp"
 #include "report.hpp"
 
 namespace clothbench {
@@ -25,7 +26,6 @@ constexpr int kFloat = 5126, kShort = 5122, kUInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
 // the panel colours of the pictures (picture.cpp)
-const float kPanelColours[6][3] = {{200, 60, 60}, {60, 110, 200}, {220, 160, 40}, {70, 160, 90}, {150, 80, 180}, {40, 170, 170}};
 
 class Glb {
  public:
@@ -166,22 +166,21 @@ void export_viewer_gltf(const std::string& path, const BodyFrame& body, const Cl
   }
   const int panels = std::max<int>(1, int(cloth.panel_names.size()));
   std::vector<int> index(std::size_t(nc), -1);
+  const Tris triangles = cloth.surface_triangles();
   for (int p = 0; p < panels; ++p) {
     Part part{p < int(cloth.panel_names.size()) ? cloth.panel_names[std::size_t(p)] : "cloth", {}, {}, {}, true};
-    for (int k = 0; k < 3; ++k) part.colour[std::size_t(k)] = kPanelColours[p % 6][k] / 255.f;
+    const Rgb colour = panel_colour(p);
+    part.colour = {colour.r / 255.f, colour.g / 255.f, colour.b / 255.f};
     for (Eigen::Index v = 0; v < nc; ++v)
-      if ((cloth.panel.empty() ? 0 : cloth.panel[std::size_t(v)]) == p) {
+      if (vertex_panel(cloth, v) == p) {
         index[std::size_t(v)] = int(part.vertices.size());
         part.vertices.push_back(v);
       }
-    for (Eigen::Index q = 0; q < cloth.quads.cols(); ++q) {
-      if ((cloth.panel.empty() ? 0 : cloth.panel[std::size_t(cloth.quads(0, q))]) != p) continue;
-      const int c[4] = {cloth.quads(0, q), cloth.quads(1, q), cloth.quads(2, q), cloth.quads(3, q)};
-      for (const auto& t : {std::array<int, 3>{c[0], c[1], c[2]}, std::array<int, 3>{c[0], c[2], c[3]}}) {
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;  // a triangle cell repeats a corner
-        if (index[std::size_t(t[0])] < 0 || index[std::size_t(t[1])] < 0 || index[std::size_t(t[2])] < 0) continue;
-        for (int k : t) part.triangles.push_back(std::uint32_t(index[std::size_t(k)]));
-      }
+    for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
+      const auto c = triangles.col(t);
+      if (vertex_panel(cloth, c(0)) != p) continue;
+      if (index[std::size_t(c(0))] < 0 || index[std::size_t(c(1))] < 0 || index[std::size_t(c(2))] < 0) continue;
+      for (int k = 0; k < 3; ++k) part.triangles.push_back(std::uint32_t(index[std::size_t(c(k))]));
     }
     parts.push_back(std::move(part));
   }

@@ -65,6 +65,16 @@ void ClothMesh::validate(const std::string& what) const {
     if (a < 0 || a >= nv) fail("attached vertex index out of range");
 }
 
+Tris ClothMesh::surface_triangles() const {
+  std::vector<std::int32_t> t;
+  for (Eigen::Index q = 0; q < quads.cols(); ++q) {
+    const auto c = quads.col(q);
+    t.insert(t.end(), {c(0), c(1), c(2)});
+    if (c(3) != c(2)) t.insert(t.end(), {c(0), c(2), c(3)});
+  }
+  return Eigen::Map<const Tris>(t.data(), 3, static_cast<Eigen::Index>(t.size() / 3));
+}
+
 ClothMesh make_grid_cloth(int nx, int ny, Real spacing, const Vec3& origin, const Vec3& u, const Vec3& v) {
   if (nx < 2 || ny < 2 || !(spacing > 0)) throw std::invalid_argument("grid cloth: need nx, ny >= 2 and spacing > 0");
   ClothMesh c;

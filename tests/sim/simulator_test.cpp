@@ -34,6 +34,19 @@ Material soft_material() {
   return m;
 }
 
+// the cloth's surface: a quad as two triangles, a triangle cell (corner 2 repeated as 3) as one
+TEST(ClothMesh, SurfaceTrianglesSplitQuadsAndKeepTriangleCellsWhole) {
+  ClothMesh c = make_grid_cloth(2, 2, 0.1f, Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY());
+  ASSERT_EQ(c.quads.cols(), 1);
+  c.quads.conservativeResize(4, 2);
+  c.quads.col(1) << 0, 1, 3, 3;
+  const Tris t = c.surface_triangles();
+  ASSERT_EQ(t.cols(), 3);
+  EXPECT_EQ(t.col(0), c.quads.col(0).head<3>());
+  EXPECT_EQ(t.col(1), Eigen::Vector3i(c.quads(0, 0), c.quads(2, 0), c.quads(3, 0)).cast<std::int32_t>());
+  EXPECT_EQ(t.col(2), Eigen::Vector3i(0, 1, 3).cast<std::int32_t>());
+}
+
 TEST(Simulator, TwoParticleSpringPeriodMatchesTheory) {
   Material mat;
   mat.density = 0.01f;  // 10 g per particle

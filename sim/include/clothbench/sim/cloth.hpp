@@ -31,6 +31,9 @@ struct ClothMesh {
   int spring_count() const { return static_cast<int>(springs.cols()); }
   /// Springs of one kind.
   int count(SpringKind k) const;
+  /// The cloth's surface: every quad as two triangles (0 1 2, 0 2 3), a triangle cell (corner 2 repeated as 3)
+  /// as one (3 x nt).
+  Tris surface_triangles() const;
   /// Appends another mesh (indices shifted); used to assemble panels into a garment.
   void append(const ClothMesh& other);
   /// Throws std::invalid_argument naming `what` on inconsistent sizes or bad indices.
