@@ -87,9 +87,9 @@ void print_summary(const RunArgs& a, const RunResult& r) {
   }
   std::printf(
       "  accuracy: %.2f %% inside, depth max %.2f mm, p95 %.2f mm; crossings %zu (%.2f %% of structural springs); "
-      "seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%\n",
+      "seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%, %.2f %% of the springs over the limit\n",
       r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.accuracy.crossings,
-      r.accuracy.crossings_pct, r.seam_gap_max_mm, 100 * r.strain_max, 100 * r.strain_p99);
+      r.accuracy.crossings_pct, r.seam_gap_max_mm, 100 * r.strain_max, 100 * r.strain_p99, 100 * r.strain_over);
   if (r.frames > 0)
     std::printf("  seam gap when the measured window starts %.2f mm\n", r.window_seam_gap_mm);
   if (r.frames > 0 && a.every_frame)

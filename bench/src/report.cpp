@@ -212,6 +212,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
   row["seam_gap_max_mm"] = r.seam_gap_max_mm;
   row["strain_max"] = r.strain_max;
   row["strain_p99"] = r.strain_p99;
+  row["strain_over"] = r.strain_over;
   row["strain_max_where"] = r.strain_max_where;
   row["kinetic_energy_j"] = r.kinetic_energy;
   return row;

@@ -430,6 +430,7 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   const StrainStats strain = sim.strain();
   r.strain_max = strain.max;
   r.strain_p99 = strain.p99;
+  r.strain_over = strain.over;
   r.strain_max_where = describe_spring(sim, strain.max_spring);
   r.kinetic_energy = sim.kinetic_energy();
 }

@@ -62,6 +62,7 @@ struct RunResult {
   Accuracy accuracy;            ///< vertices and (with face queries) quad midpoints, end state
   double seam_gap_max_mm = 0;
   double strain_max = 0, strain_p99 = 0;
+  double strain_over = 0;       ///< share of the structural springs over threshold + 1 %, fraction
   std::string strain_max_where; ///< the most strained structural spring: its ends, height, contacts, seams
   double kinetic_energy = 0;
   double animate_strain_max = 0;           ///< largest structural strain seen at any animation frame

@@ -530,6 +530,8 @@ StrainStats Simulator::strain() const {
     if (st.max_spring < 0 || e.back() > st.max) st.max = e.back(), st.max_spring = static_cast<int>(s);
   }
   if (e.empty()) return {};
+  const Real limit = params_.threshold + Real(0.01);  // the accuracy limit on strain: threshold + 1 %
+  st.over = Real(std::count_if(e.begin(), e.end(), [&](Real x) { return x > limit; })) / Real(e.size());
   const std::size_t k = std::min(e.size() - 1, static_cast<std::size_t>(0.99 * double(e.size())));
   std::nth_element(e.begin(), e.begin() + static_cast<long>(k), e.end());
   st.p99 = e[k];

@@ -108,6 +108,7 @@ struct StrainStats {
   Real max = 0;
   Real p99 = 0;
   int max_spring = -1;  ///< the spring with the largest strain (-1 when there is none)
+  Real over = 0;        ///< share of the structural springs over the limits' strain (threshold + 1 %)
 };
 
 /// Cumulative per-phase timings [ms] and counts; CD&R and CS as in walking Table 1.
