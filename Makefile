@@ -22,7 +22,7 @@ CTEST_FLAGS ?= --output-on-failure -LE 'slow|benchmark'
 
 reproduce: build
 	$(MAKE) deps PACKAGES="$(REPRODUCE_PACKAGES)"
-	$(BUILD)/bin/clothbench reproduce --out results
+	$(BUILD)/bin/clothbench reproduce --jobs $(shell nproc) --out results
 
 quick: build
 	$(BUILD)/bin/clothbench reproduce --quick --out $(BUILD)/results-quick

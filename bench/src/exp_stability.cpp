@@ -43,16 +43,23 @@ std::string dt_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
   probe.push_back("stop.max_iterations=1");
   const double bound = ctx.run(kTablecloth, "sphere", probe).dt_bound_s;
   MarkdownTable t({"limit", "largest stable dt / Eq. 4 bound", "first failure"});
-  std::ostringstream detail;
-  for (const char* limit : {"none", "velocity", "position", "directional"}) {
+  const char* const limits[] = {"none", "velocity", "position", "directional"};
+  const auto sets_at = [&](const char* limit, double m) {
+    std::vector<std::string> sets = base;
+    sets.insert(sets.end(), {std::string("solver.limit=") + limit, "solver.allow_unstable_dt=true",
+                             "solver.dt=" + std::to_string(m * bound)});
+    return sets;
+  };
+  std::vector<ExperimentContext::Request> grid;  // reproduce --jobs N: in N worker processes
+  for (const char* limit : limits)
+    for (double m : multiples) grid.push_back({kTablecloth, "sphere", sets_at(limit, m)});
+  ctx.prefetch(grid);
+  for (const char* limit : limits) {
     double stable = 0;
     std::string failure = "none up to 3x";
     std::vector<double> x, y;
     for (double m : multiples) {
-      std::vector<std::string> sets = base;
-      sets.insert(sets.end(), {std::string("solver.limit=") + limit, "solver.allow_unstable_dt=true",
-                               "solver.dt=" + std::to_string(m * bound)});
-      const RunResult& r = ctx.run(kTablecloth, "sphere", sets);
+      const RunResult& r = ctx.run(kTablecloth, "sphere", sets_at(limit, m));
       ctx.add_run(r, std::string("stability/dt/") + limit + "/" + num(m, 2));
       const std::string v = verdict(r, 0.5);
       if (v == "ok" && failure == "none up to 3x") stable = m;
@@ -65,7 +72,8 @@ std::string dt_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
   }
   return "### Time step (tablecloth, 400 vertices, static sphere; Eq. 4 bound " + num(1e3 * bound, 3) +
          " ms; failure: diverged, > " + num(kInsideLimitPct, 0) + " % inside, > " + num(kCrossingsLimitPct, 0) +
-         " % of structural springs crossing the sphere, or strain > 50 %)\n\n" + t.str();
+         " % of structural springs crossing the sphere, or strain > 50 %). " + ctx.grid_note(grid.size()) + "\n\n" +
+         t.str();
 }
 
 // (b) tunnelling: the sphere moves at increasing speed under the cloth, per collider. The papers'
@@ -81,14 +89,20 @@ std::string speed_boundaries(ExperimentContext& ctx) {
   colliders.insert(colliders.begin(), "sphere");
   RunOptions per_frame;
   per_frame.measure_frames = true;
+  const auto sets_at = [](double speed) {
+    return std::vector<std::string>{"garment.vertices=400", "solver.limit=velocity", "body.move_s=0.4",
+                                    "stop.drape_max_s=0.6", "body.velocity=[" + std::to_string(speed) + ", 0, 0]"};
+  };
+  std::vector<ExperimentContext::Request> grid;  // reproduce --jobs N: in N worker processes
+  for (const auto& c : colliders)
+    for (double speed : speeds) grid.push_back({kTablecloth, c, sets_at(speed), per_frame});
+  ctx.prefetch(grid);
   std::vector<double> reference, reference_crossings;
   for (const auto& c : colliders) {
     double ok_speed = 0;
     std::string failure = "none up to 8 m/s", insides, crossings;
     for (std::size_t i = 0; i < speeds.size(); ++i) {
-      const std::vector<std::string> sets{"garment.vertices=400", "solver.limit=velocity", "body.move_s=0.4",
-                                          "stop.drape_max_s=0.6", "body.velocity=[" + std::to_string(speeds[i]) + ", 0, 0]"};
-      const RunResult& r = ctx.run(kTablecloth, c, sets, per_frame);
+      const RunResult& r = ctx.run(kTablecloth, c, sets_at(speeds[i]), per_frame);
       ctx.add_run(r, "stability/speed/" + c + "/" + num(speeds[i], 1));
       const double inside = r.frame_max(&FrameSample::inside_pct), crossed = r.frame_max(&FrameSample::crossings_pct);
       if (c == "sphere") reference.push_back(inside), reference_crossings.push_back(crossed);
@@ -105,10 +119,12 @@ std::string speed_boundaries(ExperimentContext& ctx) {
     }
     t.row({c, ok_speed > 0 ? num(ok_speed, 1) : "< 0.5", failure, insides, crossings});
   }
-  return "\n### Sphere speed (tablecloth, 400 vertices, velocity limit, speeds 0.5, 1, 2, 4, 8 m/s for 0.4 s; the oracle "
+  return "\n### Sphere speed (tablecloth, 400 vertices, velocity limit, speeds 0.5, 1, 2, 4, 8 m/s for 0.4 s; the "
+         "oracle "
          "measures every frame; failure: more of the cloth inside than with the analytic sphere by over " +
          num(kInsideLimitPct, 0) + " points, or more structural springs crossing the sphere than with it by over " +
-         num(kCrossingsExcessPct, 0) + " points, at some frame; or diverged)\n\n" + t.str();
+         num(kCrossingsExcessPct, 0) + " points, at some frame; or diverged). " + ctx.grid_note(grid.size()) + "\n\n" +
+         t.str();
 }
 
 // the share of exact contacts a collider misses, per body region: body vertices moved 2 mm out

@@ -82,9 +82,9 @@ void ExperimentContext::prefetch(const std::vector<Request>& requests) {
         try {
           const Scene s = scene_for(todo[k].scene, todo[k].collider, todo[k].sets);
           nlohmann::json runs = nlohmann::json::array();
-          RunOptions o;
+          RunOptions o = todo[k].options;
           o.progress = false;
-          for (int r = 0; r < repetitions_; ++r) runs.push_back(to_json(run_scene(s, o)));
+          for (int r = 0; r < repetitions_; ++r) runs.push_back(to_json(run_scene(s, o), true));
           write_text_file(file(k), runs.dump());
           return 0;
         } catch (const std::exception&) {
@@ -103,6 +103,17 @@ void ExperimentContext::prefetch(const std::vector<Request>& requests) {
         std::cerr << "  prefetched " << ++done << " of " << todo.size() << "\n";
       });
   std::filesystem::remove(dir);
+}
+
+std::string ExperimentContext::grid_note(std::size_t runs) const {
+  const std::string how = jobs_ > 1 ? "in " + std::to_string(jobs_) + " worker processes at once (`reproduce --jobs " +
+                                          std::to_string(jobs_) +
+                                          "`, each run on one thread; on a machine with fewer "
+                                          "free cores than workers their times are inflated alike)"
+                                    : "one after another in one process (`reproduce --jobs 1`)";
+  return "This grid (" + std::to_string(runs) + " runs) ran " + how +
+         "; a wider one runs with `clothbench sweep SCENE --collider a,b --set key=v1,v2 --jobs N`, or on a Slurm "
+         "cluster with `--slurm` (README, \"Sweeps\").";
 }
 
 const RunResult& ExperimentContext::run(const std::string& scene, const std::string& collider,

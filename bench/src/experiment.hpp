@@ -50,12 +50,13 @@ class ExperimentContext {
   struct Request {
     std::string scene, collider;
     std::vector<std::string> sets;
+    RunOptions options = {};  ///< as run() is given them (measure_frames); progress is off in workers
   };
   /// With jobs > 1, runs the requests not yet cached in up to `jobs` worker processes (forked, one per
   /// request, its repetitions inside) and caches what they measured, so that run() answers them at once;
-  /// with jobs = 1 it does nothing (run() runs them as asked). Prefetched results have no end-state
-  /// geometry (final_body, mesh are empty): for grids whose rows need none. A request that fails in its
-  /// worker stays uncached, and run() then reports its error as usual.
+  /// with jobs = 1 it does nothing (run() runs them as asked). Prefetched results carry the cloth's end
+  /// state (mesh positions and quads: the drape error) but not the body's (final_body is empty). A request that fails
+  /// in its worker stays uncached, and run() then reports its error as usual.
   void prefetch(const std::vector<Request>& requests);
 
   /// Runs scenes/SCENE (relative to the source tree's scenes/) with a collider and overrides;
@@ -83,6 +84,10 @@ class ExperimentContext {
   std::string folder(const std::string& relative) const;
 
   bool quick() const { return quick_; }
+  /// reproduce --jobs: worker processes for prefetched grids (1: every run in this process).
+  int jobs() const { return jobs_; }
+  /// One sentence for a grid experiment's page: how its grid ran (worker processes at once, or one by one).
+  std::string grid_note(std::size_t runs) const;
 
  private:
   std::string out_dir_;

@@ -1,6 +1,9 @@
 // RunResult <-> JSON (run_result_json.hpp).
 #include "run_result_json.hpp"
 
+#include <cstdint>
+#include <vector>
+
 namespace clothbench {
 
 namespace {
@@ -59,7 +62,7 @@ std::vector<FrameSample> frames_from_json(const nlohmann::json& rows) {
 
 }  // namespace
 
-nlohmann::json to_json(const RunResult& r) {
+nlohmann::json to_json(const RunResult& r, bool end_state) {
   const auto put = [](nlohmann::json& j, const char* key, const auto& v) { j[key] = v; };
   nlohmann::json j = nlohmann::json::object();
   run_fields(j, r, put);
@@ -72,6 +75,12 @@ nlohmann::json to_json(const RunResult& r) {
                        {"phase", static_cast<int>(r.divergence->phase)},
                        {"vertex", r.divergence->vertex},
                        {"reason", r.divergence->reason}};
+  if (end_state) {
+    const auto& x = r.mesh.positions;
+    const auto& q = r.mesh.quads;
+    j["end_positions"] = std::vector<float>(x.data(), x.data() + x.size());
+    j["end_quads"] = std::vector<std::int32_t>(q.data(), q.data() + q.size());
+  }
   return j;
 }
 
@@ -87,6 +96,12 @@ RunResult run_result_from_json(const nlohmann::json& j) {
     const auto& d = j["divergence"];
     r.divergence = Divergence{d.at("iteration").get<long>(), static_cast<Phase>(d.at("phase").get<int>()),
                               d.at("vertex").get<int>(), d.at("reason").get<std::string>()};
+  }
+  if (j.contains("end_positions")) {
+    const auto x = j["end_positions"].get<std::vector<float>>();
+    const auto q = j.at("end_quads").get<std::vector<std::int32_t>>();
+    r.mesh.positions = Eigen::Map<const Points3>(x.data(), 3, static_cast<Eigen::Index>(x.size() / 3));
+    r.mesh.quads = Eigen::Map<const Quads>(q.data(), 4, static_cast<Eigen::Index>(q.size() / 4));
   }
   return r;
 }

@@ -1,14 +1,15 @@
 #pragma once
-/// A RunResult as JSON and back, every measured field but the end state's geometry (final_body, mesh):
-/// what a run in another process hands back (ExperimentContext::prefetch).
+/// A RunResult as JSON and back, every measured field and, when asked, the cloth's end state (mesh positions
+/// and quads, what the drape error needs; never final_body): what a run in another process hands back
+/// (ExperimentContext::prefetch).
 #include <nlohmann/json.hpp>
 
 #include "runner.hpp"
 
 namespace clothbench {
 
-nlohmann::json to_json(const RunResult& r);
-/// The result `to_json` wrote; final_body and mesh stay empty.
+nlohmann::json to_json(const RunResult& r, bool end_state = false);
+/// The result `to_json` wrote; final_body stays empty, and mesh too unless the end state was written.
 RunResult run_result_from_json(const nlohmann::json& j);
 
 }  // namespace clothbench

@@ -493,6 +493,8 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   if (options.estimate_only || (options.progress && r.estimate_s > options.estimate_above_s))
     print_estimate(label, scene, r);
   if (options.estimate_only) return r;
+  // the estimate's timing queries are not the run's: its share of searches counts from here
+  const CollideStats before = collider->stats();
   // sew -> drape -> animate
   Progress progress(options.progress, label, *sim);
   progress.plan(budget.total());
@@ -507,7 +509,8 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   r.divergence = sim->divergence();
   const CollideStats stats = collider->stats();
   r.threads = stats.threads;
-  r.search_share = stats.points > 0 ? double(stats.searches) / double(stats.points) : 0;
+  const std::int64_t points = stats.points - before.points, searches = stats.searches - before.searches;
+  r.search_share = points > 0 ? double(searches) / double(points) : 0;
   r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&
                 (r.drape.reached || scene.stop.drape_max_s == 0) && (!source.moves() || r.animate.reached);
   r.final_body = frame;
