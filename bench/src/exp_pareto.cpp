@@ -250,6 +250,7 @@ void minimal(ExperimentContext& ctx) {
   std::vector<Setup> setups;
   for (const auto& c : ctx.colliders({"is-cpu"}))
     setups.push_back({c, false}), setups.push_back({c, true}), setups.push_back({c, false, 6}),
+        setups.push_back({c, false, 2, true}),
         setups.push_back({c, true, 2, true});  // the papers' configuration for their Table 2 counts
   for (const auto& c : ctx.colliders({"embree", "fcl", "vdb", "bbtree"})) setups.push_back({c, false});
   const auto sets = [&](const Setup& s, int n) {
