@@ -59,7 +59,7 @@ std::vector<const RunResult*> placements(ExperimentContext& ctx, const std::stri
     std::vector<std::string> sets{"garment.vertices=" + std::to_string(vertices), "solver.regime=" + regime,
                                   "stop.sew_max_s=0.6", "stop.drape_max_s=0", "garment.jitter_mm=5",
                                   "garment.seed=" + std::to_string(seed)};
-    for (const auto& o : papers_image_space(collider)) sets.push_back(o);  // the papers' test, as the paper tables
+    for (const auto& o : papers_detection(collider)) sets.push_back(o);  // the papers' detection, as the paper tables
     if (ctx.quick()) sets.push_back("stop.max_iterations=30");
     out.push_back(&ctx.run(scene, collider, sets));
   }

@@ -41,6 +41,14 @@ inline std::vector<std::string> papers_image_space(const std::string& collider) 
   return {"collider.tangent_plane=false", "collider.float_maps=false"};
 }
 
+/// Issue 20: the paper tables' default for every collider: image space as papers_image_space, and the object-space
+/// colliders that offer it respond with face normals, as the dressing paper's bounding-box method did (section 7);
+/// rows named "ours" run our defaults (interpolated vertex normals). Empty for the others.
+inline std::vector<std::string> papers_detection(const std::string& collider) {
+  if (collider == "fcl" || collider == "embree") return {"collider.face_normals=true"};
+  return papers_image_space(collider);
+}
+
 /// What an experiment may use: cached scene runs, output writers, the options of the command.
 class ExperimentContext {
  public:
