@@ -1,4 +1,4 @@
-#include "image.hpp"
+#include "clothbench/bench/image.hpp"
 
 #include <png.h>
 

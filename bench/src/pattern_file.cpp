@@ -1,4 +1,4 @@
-#include "pattern_file.hpp"
+#include "clothbench/bench/pattern_file.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "clothbench/bench/garmentcode.hpp"
 #include "clothbench/io/errors.hpp"
-#include "garmentcode.hpp"
 
 namespace clothbench {
 

@@ -1,7 +1,7 @@
 // Pictures of dressed bodies: one orthographic camera, drawn by OpenGL through OSMesa
 // (clothbench::render) or by a small CPU z-buffer rasteriser (not for collision detection:
 // collide_is has its own); and the glTF export of the same scene.
-#include "picture.hpp"
+#include "clothbench/bench/picture.hpp"
 
 #include <algorithm>
 #include <array>

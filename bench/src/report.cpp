@@ -1,6 +1,6 @@
 // Result rows, machine context and atomic writes.
-#include "report.hpp"
-#include "timing_stats.hpp"
+#include "clothbench/bench/report.hpp"
+#include "clothbench/bench/timing_stats.hpp"
 
 #include <unistd.h>
 #include <algorithm>

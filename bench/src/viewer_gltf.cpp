@@ -1,5 +1,5 @@
 // export_viewer_gltf: a glTF 2.0 binary written by hand (JSON chunk + BIN chunk), morph-target animation.
-#include "viewer_gltf.hpp"
+#include "clothbench/bench/viewer_gltf.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,10 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "clothbench/bench/oracle.hpp"
+#include "clothbench/bench/picture.hpp"
+#include "clothbench/bench/report.hpp"
 #include "clothbench/io/errors.hpp"
-#include "oracle.hpp"
-#include "picture.hpp"
-#include "report.hpp"
 
 namespace clothbench {
 

@@ -11,12 +11,12 @@
 #include <regex>
 #include <sstream>
 
+#include "clothbench/bench/registry.hpp"
+#include "clothbench/bench/report.hpp"
+#include "clothbench/bench/runner.hpp"
 #include "clothbench/config.h"
+#include "clothbench/experiments/experiment.hpp"
 #include "clothbench/io/data_root.hpp"
-#include "experiment.hpp"
-#include "registry.hpp"
-#include "report.hpp"
-#include "runner.hpp"
 
 namespace {
 

@@ -1,13 +1,13 @@
 // results/history.jsonl: entries from result rows, reading them back, and the change between two runs.
-#include "history.hpp"
+#include "clothbench/experiments/history.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "clothbench/bench/report.hpp"
 #include "clothbench/io/errors.hpp"
-#include "report.hpp"
 
 namespace clothbench {
 namespace {

@@ -1,6 +1,6 @@
 // The oracle's crossings (structural springs through body triangles) and penetrating faces, counted
 // by hand on a box.
-#include "oracle.hpp"
+#include "clothbench/bench/oracle.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "report.hpp"
+#include "clothbench/bench/report.hpp"
 
 namespace clothbench {
 namespace {

@@ -1,6 +1,6 @@
 // Pictures of dressed bodies: the OpenGL (OSMesa) renderer against analytic coverage and against
 // the CPU rasteriser, and the glTF export of every cloth vertex.
-#include "picture.hpp"
+#include "clothbench/bench/picture.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // export_viewer_gltf: the report viewer's glTF (end state with _STRAIN / _DISTANCE; animated with morph targets).
-#include "viewer_gltf.hpp"
+#include "clothbench/bench/viewer_gltf.hpp"
 
 #include <gtest/gtest.h>
 

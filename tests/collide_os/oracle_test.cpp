@@ -1,5 +1,5 @@
 // The accuracy oracle: exact signed distance (Embree or the brute fallback) and its statistics.
-#include "oracle.hpp"
+#include "clothbench/bench/oracle.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "clothbench/bench/garmentcode.hpp"
+#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/config.h"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/brute_collider.hpp"
-#include "garmentcode.hpp"
-#include "pattern_file.hpp"
 
 namespace clothbench {
 namespace {

@@ -1,4 +1,4 @@
-#include "pattern_file.hpp"
+#include "clothbench/bench/pattern_file.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>

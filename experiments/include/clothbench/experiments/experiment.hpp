@@ -1,0 +1,118 @@
+#pragma once
+/// The experiments of `clothbench reproduce`: each writes results/ID.md (our figures beside the
+/// papers'), results/ID.json (Google Benchmark layout) and its charts and pictures.
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "clothbench/bench/runner.hpp"
+
+namespace clothbench {
+
+/// A markdown table.
+class MarkdownTable {
+ public:
+  explicit MarkdownTable(std::vector<std::string> header) : header_(std::move(header)) {}
+  void row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
+  std::string str() const;
+
+ private:
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+/// Least squares y = a + b x over the points, and its R^2.
+void linear_fit(const std::vector<double>& x, const std::vector<double>& y, double& a, double& b, double& r2);
+
+/// The solver regimes the reproduction tables report side by side (issue 17): ours, then the papers' clock.
+inline constexpr const char* kRegimes[] = {"stable", "papers"};
+/// What names a run in a regime other than the stable one: SEP + regime (rows, pictures); empty for stable.
+inline std::string regime_suffix(const std::string& regime, const std::string& sep) {
+  return regime == "stable" ? "" : sep + regime;
+}
+
+/// Issue 20: the paper tables run image space with the papers' own test by default: the z comparison along the view
+/// axis (dressing Eq. 9, walking Eq. 12) on 8-bit colour maps (dressing Eqs. 6-7, walking Eqs. 9-10); rows named
+/// "ours" run our default (the tangent-plane refinement on float maps). Empty for any other collider.
+inline std::vector<std::string> papers_image_space(const std::string& collider) {
+  if (collider.rfind("is-", 0) != 0) return {};
+  return {"collider.tangent_plane=false", "collider.float_maps=false"};
+}
+
+/// What an experiment may use: cached scene runs, output writers, the options of the command.
+class ExperimentContext {
+ public:
+  ExperimentContext(std::string out_dir, bool quick, int repetitions, int jobs = 1);
+
+  /// One run() request.
+  struct Request {
+    std::string scene, collider;
+    std::vector<std::string> sets;
+  };
+  /// With jobs > 1, runs the requests not yet cached in up to `jobs` worker processes (forked, one per
+  /// request, its repetitions inside) and caches what they measured, so that run() answers them at once;
+  /// with jobs = 1 it does nothing (run() runs them as asked). Prefetched results have no end-state
+  /// geometry (final_body, mesh are empty): for grids whose rows need none. A request that fails in its
+  /// worker stays uncached, and run() then reports its error as usual.
+  void prefetch(const std::vector<Request>& requests);
+
+  /// Runs scenes/SCENE (relative to the source tree's scenes/) with a collider and overrides;
+  /// identical requests in one `reproduce` share one run. With repetitions > 1 the run is
+  /// repeated and the repetition with the median time per iteration is returned; add_run() writes
+  /// every repetition's row and the aggregates.
+  const RunResult& run(const std::string& scene, const std::string& collider, const std::vector<std::string>& sets = {},
+                       const RunOptions& options = {});
+  /// Colliders of `wanted` that this build has (the others are reported as not built).
+  std::vector<std::string> colliders(const std::vector<std::string>& wanted) const;
+  /// Adds a JSON row for the current experiment (measurements not made by run()).
+  void add_row(nlohmann::json row) { rows_.push_back(std::move(row)); }
+  /// Adds the rows of a run() result named `name`, `extra` fields merged into each: with repetitions,
+  /// one row per repetition and their aggregates (repetition_rows), else result_row(r, name).
+  void add_run(const RunResult& r, const std::string& name, const nlohmann::json& extra = nlohmann::json::object());
+  /// Writes OUT/ID.md (title, definitions, machine, `body`) and OUT/ID.json (rows so far).
+  void write(const std::string& id, const std::string& title, const std::string& body);
+  /// Renders a chart through experiments/plot/plot.py (matplotlib) into OUT/NAME.png; `spec` holds
+  /// title, xlabel, ylabel, series [{label, x, y}], optional logx/logy. Returns false (and says
+  /// why on stderr) when python3/matplotlib are missing.
+  bool chart(const std::string& name, nlohmann::json spec);
+  /// OUT/relative, creating its folder.
+  std::string path(const std::string& relative) const;
+  /// The folder OUT/relative, created.
+  std::string folder(const std::string& relative) const;
+
+  bool quick() const { return quick_; }
+
+ private:
+  std::string out_dir_;
+  bool quick_;
+  int repetitions_;
+  int jobs_;
+  std::map<std::string, std::vector<RunResult>> cache_;
+  nlohmann::json rows_ = nlohmann::json::array();
+};
+
+/// One experiment of `clothbench reproduce`.
+struct Experiment {
+  std::string id;
+  std::string title;
+  std::function<void(ExperimentContext&)> run;
+};
+
+/// Every experiment, in the order `reproduce` runs them.
+const std::vector<Experiment>& experiments();
+
+/// The experiments defined per file (each exp_*.cpp adds its own).
+void add_dressing_experiments(std::vector<Experiment>& out);
+void add_walking_experiments(std::vector<Experiment>& out);
+void add_durupinar_experiments(std::vector<Experiment>& out);
+void add_integrator_experiments(std::vector<Experiment>& out);
+void add_picture_experiments(std::vector<Experiment>& out);
+void add_stability_experiments(std::vector<Experiment>& out);
+void add_claims_experiments(std::vector<Experiment>& out);
+void add_pareto_experiments(std::vector<Experiment>& out);
+void add_collider_experiments(std::vector<Experiment>& out);
+void add_deviation_experiments(std::vector<Experiment>& out);
+
+}  // namespace clothbench
