@@ -12,9 +12,9 @@
 #include <stdexcept>
 
 #include "clothbench/bench/oracle.hpp"
-#include "clothbench/bench/picture.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/render/picture.hpp"
 
 namespace clothbench {
 

@@ -7,11 +7,11 @@
 #include <sstream>
 #include <string>
 
-#include "clothbench/bench/image.hpp"
 #include "clothbench/collide_is/map_set.hpp"
 #include "clothbench/config.h"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/render/map_pictures.hpp"
 #include "clothbench/sim/timer.hpp"
 #include "commands.hpp"
 
@@ -33,37 +33,6 @@ struct MapsArgs {
   int size = 320;
   std::string png_dir;
 };
-
-// colour of one element: depth as z-buffer value through the colour map (dark near, light far;
-// walking Fig. 4), side layer red; normal and velocity as their 8-bit colours (dressing Eq. 6,
-// walking Eq. 9); empty pixels white
-Rgb depth_colour(const MapSet& m, int view, std::size_t i) {
-  if (m.mask[i] == MapSet::kEmpty) return {255, 255, 255};
-  if (m.mask[i] == MapSet::kSide) return {220, 30, 30};
-  const MapFrame& f = m.frame;
-  const double zbuf =
-      view == MapSet::kFront ? (f.z_max - m.z[i]) / f.depth_range() : (m.z[i] - f.z_min) / f.depth_range();
-  return colormap(zbuf);
-}
-
-Rgb vector_colour(const Vec3& unit_range) {
-  const auto c = [](Real x) {
-    return static_cast<std::uint8_t>(std::clamp(0.5f * x + 0.5f, 0.0f, 1.0f) * 255.0f + 0.5f);
-  };
-  return {c(unit_range.x()), c(unit_range.y()), c(unit_range.z())};
-}
-
-// front (left) and back (right) side by side, each as its camera sees it, +y up
-template <typename Colour>
-void write_pair(const MapSet& m, const std::string& path, Colour colour) {
-  const int n = m.frame.size;
-  Image img(2 * n, n);
-  for (int view = 0; view < 2; ++view)
-    for (int row = 0; row < n; ++row)
-      for (int col = 0; col < n; ++col) img.set(view * n + col, n - 1 - row, colour(view, m.index(view, col, row)));
-  img.write_png(path);
-  std::cout << "wrote " << path << "\n";
-}
 
 int run_maps(const MapsArgs& a) {
 #ifndef CLOTHBENCH_WITH_GL
@@ -100,14 +69,7 @@ int run_maps(const MapsArgs& a) {
   // the pictures
   std::filesystem::create_directories(a.png_dir);
   const std::string base = (std::filesystem::path(a.png_dir) / stem).string();
-  write_pair(m, base + "_depth.png", [&](int view, std::size_t i) { return depth_colour(m, view, i); });
-  write_pair(m, base + "_normal.png", [&](int, std::size_t i) {
-    return m.mask[i] == MapSet::kEmpty ? Rgb{255, 255, 255} : vector_colour(m.normal_at(i));
-  });
-  if (m.has_velocity)
-    write_pair(m, base + "_velocity.png", [&](int, std::size_t i) {
-      return m.mask[i] == MapSet::kEmpty ? Rgb{255, 255, 255} : vector_colour(m.velocity_at(i) / m.max_speed);
-    });
+  for (const std::string& path : write_map_pictures(m, base)) std::cout << "wrote " << path << "\n";
   return 0;
 }
 

@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <iostream>
 
-#include "clothbench/bench/picture.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/runner.hpp"
 #include "clothbench/bench/timing_stats.hpp"
 #include "clothbench/bench/viewer_gltf.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/render/picture.hpp"
 #include "commands.hpp"
 
 namespace clothbench::cli {
@@ -131,12 +131,12 @@ int run(const RunArgs& a) {
   print_spread(runs);
   if (!a.json.empty()) write_text_file(a.json, run_document(a, scene, runs).dump(2) + "\n");
   if (!a.png.empty()) {
+    const std::unique_ptr<PictureRenderer> pictures = make_picture_renderer();
     std::vector<Image> views;
     for (View v : {View::kFront, View::kSide, View::kBack})
-      views.push_back(render_dressed(r.final_body, r.mesh, 480, v));
+      views.push_back(pictures->render(r.final_body, r.mesh, 480, v));
     side_by_side(views).write_png(a.png);
-    std::printf("  picture %s (front, side, back) drawn by %s\n", a.png.c_str(),
-                picture_renderer_name(default_picture_renderer()).c_str());
+    std::printf("  picture %s (front, side, back) drawn by %s\n", a.png.c_str(), pictures->name().c_str());
   }
   if (!a.gltf.empty()) export_viewer_gltf(a.gltf, r.final_body, r.mesh, frames);
   if (r.divergence) return 3;

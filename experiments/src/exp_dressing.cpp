@@ -2,11 +2,11 @@
 #include <cmath>
 #include <sstream>
 
-#include "clothbench/bench/picture.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/viewer_gltf.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
+#include "clothbench/render/picture.hpp"
 
 namespace clothbench {
 
@@ -33,16 +33,16 @@ std::string accuracy_cells(const RunResult& r) {
 // pictures/NAME.png: front, side and back of a run's end state; returns a markdown link to it
 std::string picture(ExperimentContext& ctx, const RunResult& r, const std::string& name, const std::string& label) {
   std::vector<Image> views;
-  for (View v : {View::kFront, View::kSide, View::kBack}) views.push_back(render_dressed(r.final_body, r.mesh, 360, v));
+  for (View v : {View::kFront, View::kSide, View::kBack}) views.push_back(ctx.pictures().render(r.final_body, r.mesh, 360, v));
   side_by_side(views).write_png(ctx.path("pictures/" + name + ".png"));
   return "[" + label + "](pictures/" + name + ".png)";
 }
 
 // the line under a table that lists its pictures and names the renderer that drew them (empty without pictures)
-std::string pictures_line(const std::vector<std::string>& links, const std::string& extra = "") {
+std::string pictures_line(ExperimentContext& ctx, const std::vector<std::string>& links, const std::string& extra = "") {
   if (links.empty()) return "";
   std::string line = "\nPictures of the is-cpu runs' end states (front, side, back), drawn by " +
-                     picture_renderer_name(default_picture_renderer()) + ": ";
+                     ctx.pictures().name() + ": ";
   for (std::size_t i = 0; i < links.size(); ++i) line += (i ? ", " : "") + links[i];
   return line + extra + ".\n";
 }
@@ -153,7 +153,7 @@ void dressing_t1(ExperimentContext& ctx) {
           "Accuracy from the exact oracle at the end state; crossings = structural springs whose segment passes "
           "through a body triangle (the paper's holes, section 7), with their share of the structural springs."
        << kImageSpaceNote << "\n\n"
-       << t.str() << pictures_line(pictures, gltf) << ratios.str();
+       << t.str() << pictures_line(ctx, pictures, gltf) << ratios.str();
   ctx.write("dressing-t1", "Dressing paper Table 1: image space vs object space", body.str());
 }
 
@@ -221,7 +221,7 @@ void dressing_t2(ExperimentContext& ctx) {
             "and the papers' (see dressing-t1; the paper does not state its dt). Crossings = structural "
             "springs through a body triangle (the holes fewer vertices produce, section 7), share of them in brackets." +
                 kImageSpaceNote + "\n\n" +
-                t.str() + pictures_line(pictures));
+                t.str() + pictures_line(ctx, pictures));
 }
 
 void dressing_f8(ExperimentContext& ctx) {

@@ -1,14 +1,18 @@
-// pictures: the meshed garments (results/garments) and the body maps (results/maps), drawn by the
-// `garment` and `maps` commands of this same executable so `reproduce` regenerates them too.
+// pictures: the meshed garments (results/garments) and the body maps (results/maps), drawn by render/'s
+// library functions, the ones the `garment --png` and `maps --png` commands use.
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
-#include <iostream>
+#include <iomanip>
+#include <sstream>
 
+#include "clothbench/bench/pattern_file.hpp"
+#include "clothbench/collide_is/map_set.hpp"
 #include "clothbench/config.h"
 #include "clothbench/experiments/experiment.hpp"
+#include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
-#include "clothbench/io/errors.hpp"
+#include "clothbench/render/map_pictures.hpp"
+#include "clothbench/render/pattern_picture.hpp"
 
 namespace clothbench {
 
@@ -16,12 +20,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string self() {
-  std::error_code ec;
-  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) throw InputError("cannot find the clothbench executable (/proc/self/exe): " + ec.message());
-  return p.string();
-}
+// the renderer `maps` uses by default: OpenGL (OSMesa) in builds with CLOTHBENCH_WITH_GL, else the CPU rasteriser
+#ifdef CLOTHBENCH_WITH_GL
+constexpr const char* kMapRenderer = "gl";
+#else
+constexpr const char* kMapRenderer = "cpu";
+#endif
+// the grid spacing `garment` meshes at when no vertex count is given [cm]
+constexpr double kGarmentSpacingCm = 2.0;
 
 std::vector<std::string> sorted_files(const std::string& dir, const std::string& extension) {
   std::vector<std::string> out;
@@ -31,9 +37,30 @@ std::vector<std::string> sorted_files(const std::string& dir, const std::string&
   return out;
 }
 
-void command(const std::string& args) {
-  const std::string line = "'" + self() + "' " + args + " > /dev/null";
-  if (std::system(line.c_str()) != 0) throw InputError("picture command failed: clothbench " + args);
+// as `clothbench garment FILE --png PNG`
+void garment_picture(const std::string& file, const std::string& png) {
+  const Pattern pattern = load_pattern(file);
+  MeshingOptions options;
+  options.spacing_cm = kGarmentSpacingCm;
+  draw_pattern(pattern, mesh_pattern(pattern, options)).write_png(png);
+}
+
+// as `clothbench maps BODY [--animation NAME --at SECONDS] --png DIR` (320^2, the default renderer)
+void map_pictures(const std::string& body, const std::string& dir, const std::string& animation = "", double at_s = 0) {
+  const BodyModel model = load_body(body);
+  BodyFrame frame = model.rest();
+  std::string stem = fs::path(body).stem().string();
+  if (!animation.empty()) {
+    frame = model.frame(model.animation_index(animation), at_s);
+    std::ostringstream suffix;
+    suffix << "_" << animation << "_t" << std::fixed << std::setprecision(2) << at_s << "s";
+    stem += suffix.str();
+  } else {
+    stem += "_rest";
+  }
+  ColliderOptions options;
+  options.map_size = 320;
+  write_map_pictures(render_maps(frame, kMapRenderer, options), (fs::path(dir) / stem).string());
 }
 
 void pictures(ExperimentContext& ctx) {
@@ -41,7 +68,7 @@ void pictures(ExperimentContext& ctx) {
   // every garment file (in name order), and the GarmentCode specifications of the data root
   for (const auto& file : sorted_files(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/garments", ".pattern")) {
     const std::string png = ctx.path("garments/" + fs::path(file).stem().string() + ".png");
-    command("garment '" + file + "' --png '" + png + "'");
+    garment_picture(file, png);
     written.push_back(png);
   }
   const fs::path gc = data_path("garments/garmentcode");
@@ -51,17 +78,17 @@ void pictures(ExperimentContext& ctx) {
       std::string stem = fs::path(file).stem().string();
       stem = stem.substr(0, stem.rfind("_specification"));
       const std::string png = ctx.path("garments/garmentcode_" + stem + ".png");
-      command("garment '" + file + "' --png '" + png + "'");
+      garment_picture(file, png);
       written.push_back(png);
     }
   // maps of the walking body at rest and in a walking frame (Debian's body when the data root is absent)
   const std::string walker = data_path("body/mh_female_walk.glb");
   const std::string maps = ctx.folder("maps");
   if (fs::exists(walker)) {
-    command("maps '" + walker + "' --png '" + maps + "'");
-    command("maps '" + walker + "' --animation walk_07_01 --at 2 --png '" + maps + "'");
+    map_pictures(walker, maps);
+    map_pictures(walker, maps, "walk_07_01", 2);
   } else {
-    command("maps '" + std::string(kDebianHumanBody) + "' --png '" + maps + "'");
+    map_pictures(kDebianHumanBody, maps);
   }
   std::string body = "Meshed garment patterns (`clothbench garment FILE --png`, default spacing) and front/back body "
                      "maps (`clothbench maps BODY --png DIR`: depth, normal and, for a moving frame, velocity).\n\n";

@@ -7,13 +7,13 @@
 #include <sstream>
 
 #include "clothbench/bench/oracle.hpp"
-#include "clothbench/bench/picture.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/viewer_gltf.hpp"
 #include "clothbench/config.h"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
 #include "clothbench/io/data_root.hpp"
+#include "clothbench/render/picture.hpp"
 
 namespace clothbench {
 
@@ -55,7 +55,8 @@ struct SequenceFrame {
 };
 
 // PREFIX-frameNNN.png per kept frame (front view), drawn on the run's final body and mesh topology
-void write_sequence(const std::vector<SequenceFrame>& sequence, const RunResult& r, const std::string& prefix) {
+void write_sequence(PictureRenderer& pictures, const std::vector<SequenceFrame>& sequence, const RunResult& r,
+                    const std::string& prefix) {
   BodyFrame body = r.final_body;
   ClothMesh mesh = r.mesh;
   for (const auto& f : sequence) {
@@ -64,7 +65,7 @@ void write_sequence(const std::vector<SequenceFrame>& sequence, const RunResult&
     mesh.positions = f.cloth_positions;
     char name[32];
     std::snprintf(name, sizeof name, "-frame%03ld.png", f.frame);
-    render_dressed(body, mesh, 200, View::kFront).write_png(prefix + name);
+    pictures.render(body, mesh, 200, View::kFront).write_png(prefix + name);
   }
 }
 
@@ -217,14 +218,14 @@ void walking_t2(ExperimentContext& ctx) {
           models += (models.empty() ? "" : ", ") + ("[" + std::string(g.product) + ", " + c + "](" + glb + ")");
         }
         if (!pictures) continue;
-        write_sequence(sequence, r, ctx.path(stem + "/" + stem.substr(9)));
+        write_sequence(ctx.pictures(), sequence, r, ctx.path(stem + "/" + stem.substr(9)));
         const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"),
                                       scene_fps(ctx, scene));
         media += "- " + std::string(g.product) + ": [end state](" + stem + ".png), " + std::to_string(sequence.size()) +
                  " frames in `" + stem + "/`" +
                  (video ? ", [video](" + stem + ".mp4)" : std::string(", no video (ffmpeg absent)")) + "\n";
         std::vector<Image> views;
-        for (View v : {View::kFront, View::kSide}) views.push_back(render_dressed(r.final_body, r.mesh, 360, v));
+        for (View v : {View::kFront, View::kSide}) views.push_back(ctx.pictures().render(r.final_body, r.mesh, 360, v));
         side_by_side(views).write_png(ctx.path(stem + ".png"));
       }
     const std::string chart = std::string("walking-t2-frames-") + g.name;
@@ -257,7 +258,7 @@ void walking_t2(ExperimentContext& ctx) {
           t.str() + "\n" + charts +
           (media.empty()
                ? std::string()
-               : "\nPictures of the is-cpu runs (front view; " + picture_renderer_name(default_picture_renderer()) +
+               : "\nPictures of the is-cpu runs (front view; " + ctx.pictures().name() +
                      "; frames are copied during the run and drawn after it, outside s/frame):\n\n" + media) +
           (models.empty() ? std::string()
                           : "\nAnimated binary glTF of the walks (12 frames kept, for results/index.html's viewer): " +
@@ -318,7 +319,7 @@ void walking_f8(ExperimentContext& ctx) {
       lag_series.push_back({{"label", label}, {"x", times}, {"y", lags}, {"style", "-"}});
       touch_series.push_back({{"label", label}, {"x", times}, {"y", touching}, {"style", "-"}});
     }
-    if (!r.divergence) pictures.push_back(render_dressed(r.final_body, r.mesh, 300, View::kFront));
+    if (!r.divergence) pictures.push_back(ctx.pictures().render(r.final_body, r.mesh, 300, View::kFront));
   }
   side_by_side(pictures).write_png(ctx.path("pictures/walking-f8.png"));
   std::string charts;
@@ -349,7 +350,7 @@ void walking_f8(ExperimentContext& ctx) {
           "lag grows to the table's figure; the rule as stated does not get through the drape. The paper's Fig. 8 "
           "shows the directional cloth following the sphere: neither reading of Eq. 6 reproduces that here." + "\n\n![" +
           "the rows that did not diverge, in order](pictures/walking-f8.png)\n\nPictures drawn by " +
-          picture_renderer_name(default_picture_renderer()) + ".\n");
+          ctx.pictures().name() + ".\n");
 }
 
 }  // namespace

@@ -147,6 +147,11 @@ std::vector<std::string> ExperimentContext::colliders(const std::vector<std::str
   return out;
 }
 
+PictureRenderer& ExperimentContext::pictures() {
+  if (!pictures_) pictures_ = make_picture_renderer();
+  return *pictures_;
+}
+
 std::string ExperimentContext::path(const std::string& relative) const {
   const std::filesystem::path p = std::filesystem::path(out_dir_) / relative;
   std::error_code ec;

@@ -200,20 +200,20 @@ struct OffscreenRenderer::Impl {
   }
 
   // resolve the samples, read back bottom-up and flip to top row first
-  RgbBuffer read_back() {
+  Image read_back() {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo[0]);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo[1]);
     glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo[1]);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    RgbBuffer out{width, height, std::vector<std::uint8_t>(std::size_t(3) * std::size_t(width) * std::size_t(height))};
-    std::vector<std::uint8_t> bottom_up(out.rgb.size());
+    Image out(width, height);
+    std::vector<std::uint8_t> bottom_up(std::size_t(3) * std::size_t(width) * std::size_t(height));
     glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data());
     const std::size_t row = std::size_t(3) * std::size_t(width);
     for (int y = 0; y < height; ++y)
       std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(row * std::size_t(height - 1 - y)), row,
-                  out.rgb.begin() + static_cast<std::ptrdiff_t>(row * std::size_t(y)));
+                  out.data() + static_cast<std::ptrdiff_t>(row * std::size_t(y)));
     return out;
   }
 };
@@ -232,7 +232,7 @@ int OffscreenRenderer::samples() const { return std::max(1, static_cast<int>(imp
 
 std::string_view OffscreenRenderer::gl_renderer() const { return impl_->renderer_name; }
 
-RgbBuffer OffscreenRenderer::render(const std::vector<DrawMesh>& meshes, const OrthoCamera& camera,
+Image OffscreenRenderer::render(const std::vector<DrawMesh>& meshes, const OrthoCamera& camera,
                                     const Lighting& lighting) {
   if (camera.width <= 0 || camera.height <= 0 || !(camera.half_width > 0) || !(camera.half_height > 0))
     throw std::invalid_argument("render: image size and camera extent must be positive (" +

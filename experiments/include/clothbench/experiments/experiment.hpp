@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "clothbench/bench/runner.hpp"
+#include "clothbench/render/picture.hpp"
 
 namespace clothbench {
 
@@ -83,6 +84,9 @@ class ExperimentContext {
   std::string folder(const std::string& relative) const;
 
   bool quick() const { return quick_; }
+  /// The renderer of every picture of this `reproduce` (the build's default backend), created on first use
+  /// and kept: one OSMesa context for all pictures. Throws as make_picture_renderer does.
+  PictureRenderer& pictures();
 
  private:
   std::string out_dir_;
@@ -91,6 +95,7 @@ class ExperimentContext {
   int jobs_;
   std::map<std::string, std::vector<RunResult>> cache_;
   nlohmann::json rows_ = nlohmann::json::array();
+  std::unique_ptr<PictureRenderer> pictures_;
 };
 
 /// One experiment of `clothbench reproduce`.

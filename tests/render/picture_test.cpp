@@ -1,11 +1,12 @@
 // Pictures of dressed bodies: the OpenGL (OSMesa) renderer against analytic coverage and against
-// the CPU rasteriser, and the glTF export of every cloth vertex.
-#include "clothbench/bench/picture.hpp"
+// the CPU rasteriser, both behind PictureRenderer.
+#include "clothbench/render/picture.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -62,9 +63,9 @@ ClothMesh cloth_in_front() {
 
 // why this build or this machine has no OpenGL pictures ("" when it has them)
 std::string gl_unavailable() {
-  if (!has_picture_renderer(PictureRenderer::kGl)) return "built without CLOTHBENCH_WITH_GL";
+  if (!has_picture_backend(PictureBackend::kGl)) return "built without CLOTHBENCH_WITH_GL";
   try {
-    picture_renderer_name(PictureRenderer::kGl);
+    make_picture_renderer(PictureBackend::kGl);
   } catch (const std::runtime_error& e) {
     return std::string("no OSMesa context: ") + e.what();
   }
@@ -72,24 +73,26 @@ std::string gl_unavailable() {
 }
 
 TEST(Picture, DefaultRendererIsOpenGlWhenBuilt) {
-  EXPECT_TRUE(has_picture_renderer(PictureRenderer::kCpu));
-  EXPECT_EQ(default_picture_renderer() == PictureRenderer::kGl, has_picture_renderer(PictureRenderer::kGl));
-  EXPECT_EQ(picture_renderer_name(PictureRenderer::kCpu), "CPU rasteriser");
+  EXPECT_TRUE(has_picture_backend(PictureBackend::kCpu));
+  EXPECT_EQ(default_picture_backend() == PictureBackend::kGl, has_picture_backend(PictureBackend::kGl));
+  EXPECT_EQ(make_picture_renderer(PictureBackend::kCpu)->name(), "CPU rasteriser");
+  EXPECT_EQ(make_picture_renderer(PictureBackend::kCpu)->backend(), PictureBackend::kCpu);
 }
 
 TEST(Picture, SphereCoversItsDiscAndIsLitFromTheUpperRight) {
   const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 48, 96);
-  std::vector<PictureRenderer> renderers{PictureRenderer::kCpu};
-  if (gl_unavailable().empty()) renderers.push_back(PictureRenderer::kGl);
-  for (PictureRenderer r : renderers) {
-    const Image im = render_dressed(sphere, ClothMesh{}, 220, View::kFront, r);
+  std::vector<PictureBackend> backends{PictureBackend::kCpu};
+  if (gl_unavailable().empty()) backends.push_back(PictureBackend::kGl);
+  for (PictureBackend b : backends) {
+    const std::unique_ptr<PictureRenderer> r = make_picture_renderer(b);
+    const Image im = r->render(sphere, ClothMesh{}, 220, View::kFront);
     // the disc: pi r^2 at 220 pixels per 1.1 diameters
     const double scale = 220.0 / (2.2 * kRadius);
     const double expected = M_PI * std::pow(kRadius * scale, 2) / (double(im.width()) * im.height());
     const double fraction = count(im, covered) / (double(im.width()) * im.height());
-    EXPECT_NEAR(fraction / expected, 1.0, 0.02) << picture_renderer_name(r) << ": " << fraction << " vs " << expected;
+    EXPECT_NEAR(fraction / expected, 1.0, 0.02) << r->name() << ": " << fraction << " vs " << expected;
     EXPECT_GT(quadrant_brightness(im, true, true), quadrant_brightness(im, false, false) + 20)
-        << picture_renderer_name(r);
+        << r->name();
   }
 }
 
@@ -97,9 +100,11 @@ TEST(Picture, OpenGlAndCpuAgreeInCoverage) {
   if (const std::string why = gl_unavailable(); !why.empty()) GTEST_SKIP() << why;
   const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 48, 96);
   const ClothMesh cloth = cloth_in_front();
+  const std::unique_ptr<PictureRenderer> gl_renderer = make_picture_renderer(PictureBackend::kGl);
+  const std::unique_ptr<PictureRenderer> cpu_renderer = make_picture_renderer(PictureBackend::kCpu);
   for (View v : {View::kFront, View::kSide, View::kBack}) {
-    const Image gl = render_dressed(sphere, cloth, 240, v, PictureRenderer::kGl);
-    const Image cpu = render_dressed(sphere, cloth, 240, v, PictureRenderer::kCpu);
+    const Image gl = gl_renderer->render(sphere, cloth, 240, v);
+    const Image cpu = cpu_renderer->render(sphere, cloth, 240, v);
     ASSERT_EQ(gl.width(), cpu.width());
     ASSERT_EQ(gl.height(), cpu.height());
     EXPECT_GE(iou(gl, cpu, covered), 0.97) << "view " << int(v);
@@ -112,9 +117,8 @@ TEST(Picture, OpenGlAndCpuAgreeInCoverage) {
 }
 
 TEST(Picture, RejectsOpenGlWhenNotBuilt) {
-  if (has_picture_renderer(PictureRenderer::kGl)) GTEST_SKIP() << "this build has the OpenGL renderer";
-  const BodyFrame sphere = make_sphere_body(kCentre, kRadius, 8, 16);
-  EXPECT_THROW(render_dressed(sphere, ClothMesh{}, 64, View::kFront, PictureRenderer::kGl), std::runtime_error);
+  if (has_picture_backend(PictureBackend::kGl)) GTEST_SKIP() << "this build has the OpenGL renderer";
+  EXPECT_THROW(make_picture_renderer(PictureBackend::kGl), std::runtime_error);
 }
 
 }  // namespace

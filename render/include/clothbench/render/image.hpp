@@ -1,5 +1,6 @@
 #pragma once
-/// An 8-bit RGB raster with a few drawing primitives, written as PNG (libpng).
+/// The one image type of every picture: an 8-bit RGB raster with a few drawing primitives, written as
+/// PNG (libpng).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ class Image {
   /// Sets a pixel; (0, 0) is the top-left corner; outside the raster it does nothing.
   void set(int x, int y, Rgb c);
   Rgb get(int x, int y) const;
+  /// The pixels: row-major, top row first, 3 bytes per pixel (3 x width x height).
+  std::uint8_t* data() { return rgb_.data(); }
+  const std::uint8_t* data() const { return rgb_.data(); }
   /// A 1-pixel line from (x0, y0) to (x1, y1) (Bresenham).
   void line(int x0, int y0, int x1, int y1, Rgb c);
   /// A filled axis-aligned square of side 2r+1 centred at (x, y).

@@ -1,4 +1,4 @@
-#include "clothbench/bench/image.hpp"
+#include "clothbench/render/image.hpp"
 
 #include <png.h>
 
