@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "clothbench/bench/garmentcode.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/io/garmentcode.hpp"
 
 namespace {
 

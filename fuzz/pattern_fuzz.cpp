@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/io/pattern_file.hpp"
 
 namespace {
 

@@ -19,12 +19,13 @@
 #define CALLGRIND_TOGGLE_COLLECT
 #endif
 
-#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/runner.hpp"
 #include "clothbench/bench/scene.hpp"
 #include "clothbench/config.h"
 #include "clothbench/io/body_loader.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/timer.hpp"
 

@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "clothbench/bench/body_between_frames.hpp"
-#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
 #include "clothbench/sim/timer.hpp"

@@ -6,8 +6,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/render/pattern_picture.hpp"
 #include "commands.hpp"
 

@@ -7,7 +7,7 @@
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/runner.hpp"
 #include "clothbench/bench/timing_stats.hpp"
-#include "clothbench/bench/viewer_gltf.hpp"
+#include "clothbench/bench/viewer_export.hpp"
 #include "clothbench/io/errors.hpp"
 #include "clothbench/render/picture.hpp"
 #include "commands.hpp"

@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "clothbench/bench/report.hpp"
-#include "clothbench/bench/viewer_gltf.hpp"
+#include "clothbench/bench/viewer_export.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
 #include "clothbench/render/picture.hpp"

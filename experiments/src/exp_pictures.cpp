@@ -5,12 +5,13 @@
 #include <iomanip>
 #include <sstream>
 
-#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/collide_is/map_set.hpp"
 #include "clothbench/config.h"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/render/map_pictures.hpp"
 #include "clothbench/render/pattern_picture.hpp"
 

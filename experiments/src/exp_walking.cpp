@@ -8,7 +8,7 @@
 
 #include "clothbench/bench/oracle.hpp"
 #include "clothbench/bench/report.hpp"
-#include "clothbench/bench/viewer_gltf.hpp"
+#include "clothbench/bench/viewer_export.hpp"
 #include "clothbench/config.h"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"

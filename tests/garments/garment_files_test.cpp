@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "clothbench/bench/garmentcode.hpp"
-#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/config.h"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
+#include "clothbench/io/garmentcode.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/brute_collider.hpp"
 
 namespace clothbench {

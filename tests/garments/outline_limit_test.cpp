@@ -4,8 +4,8 @@
 #include <sstream>
 #include <string>
 
-#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/io/pattern_file.hpp"
 
 namespace clothbench {
 namespace {

@@ -1,4 +1,5 @@
-#include "clothbench/bench/pattern_file.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>

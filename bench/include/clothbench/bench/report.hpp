@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "clothbench/bench/runner.hpp"
+#include "clothbench/io/text_file.hpp"  // write_text_file, for every report
 
 namespace clothbench {
 
@@ -82,9 +83,6 @@ int run_python_script(const std::string& script, const std::string& args);
 /// Values of time_unit in 1 ms: ns 1e6, us 1e3, ms 1, s 1e-3; NaN for any other.
 double unit_per_ms(const std::string& unit);
 
-/// Writes text to PATH.tmp then renames it (no half-written file); throws InputError naming the
-/// path when the directory is not writable.
-void write_text_file(const std::string& path, const std::string& text);
 
 /// A number with `digits` decimals, or "-" for NaN.
 std::string num(double v, int digits);

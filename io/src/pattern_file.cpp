@@ -1,4 +1,4 @@
-#include "clothbench/bench/pattern_file.hpp"
+#include "clothbench/io/pattern_file.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "clothbench/bench/garmentcode.hpp"
 #include "clothbench/io/errors.hpp"
 
 namespace clothbench {
@@ -52,9 +51,6 @@ std::string stem(const std::string& path) {
   return s;
 }
 
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 // Length of a valid UTF-8 sequence starting at s[i], or 0.
 int utf8_length(std::string_view s, std::size_t i) {
@@ -495,8 +491,7 @@ Pattern validated_pattern(Pattern pattern, const std::string& file) {
 
 Pattern parse_pattern(std::string_view text, const std::string& name) { return Parser(text, name).run(); }
 
-Pattern load_pattern(const std::string& path) {
-  if (ends_with(path, ".json")) return load_garmentcode(path);
+Pattern load_pattern_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(located(path, 0, "cannot open the pattern file"));
   std::ostringstream buf;

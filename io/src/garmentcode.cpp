@@ -1,4 +1,4 @@
-#include "clothbench/bench/garmentcode.hpp"
+#include "clothbench/io/garmentcode.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,9 +10,9 @@
 #include <sstream>
 #include <vector>
 
-#include "clothbench/bench/pattern_file.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/io/pattern_file.hpp"
 
 namespace clothbench {
 

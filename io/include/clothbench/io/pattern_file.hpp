@@ -1,6 +1,7 @@
 #pragma once
-/// Garment pattern files: the `.pattern` text format (documented in scenes/README.md) and, by
-/// extension, GarmentCode JSON specifications (garmentcode.hpp), both read into sim's Pattern.
+/// The `.pattern` text format of garment patterns (documented in scenes/README.md), read into and
+/// written from sim's Pattern; and what both pattern formats share (the outline limit, validation).
+/// Reading a file of either format by its extension: pattern_loader.hpp.
 #include <string>
 #include <string_view>
 
@@ -12,9 +13,8 @@ namespace clothbench {
 /// measures the distance to the outline, every point of it, from every grid node (found by fuzz/).
 inline constexpr int kMaxOutlinePoints = 2000;
 
-/// Reads a pattern file: `.json` is read as a GarmentCode specification, anything else as
-/// `.pattern` text. Throws InputError "FILE:LINE: what is wrong" on bad input or an unreadable file.
-Pattern load_pattern(const std::string& path);
+/// Reads a `.pattern` text file. Throws InputError "FILE:LINE: what is wrong" on bad input or an unreadable file.
+Pattern load_pattern_text(const std::string& path);
 
 /// Parses `.pattern` text. `name` is the file named in error messages; the garment is called after
 /// its `garment` line, else after `name` without folders and extension. Outlines are read in cm,

@@ -1,8 +1,9 @@
-// export_viewer_gltf: the report viewer's glTF (end state with _STRAIN / _DISTANCE; animated with morph targets).
-#include "clothbench/bench/viewer_gltf.hpp"
+// write_viewer_gltf: the report viewer's glTF (end state with _STRAIN / _DISTANCE; animated with morph targets).
+#include "clothbench/io/viewer_gltf.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -66,6 +67,17 @@ Glb read_glb(const std::string& path) {
   return g;
 }
 
+// the distance to the sphere of radius 0.3 m at the origin (exact, beside the tessellated body) and one colour a panel
+ViewerStyle sphere_style() {
+  ViewerStyle style;
+  style.panel_colour = [](int) { return std::array<float, 3>{0.8f, 0.2f, 0.2f}; };
+  style.signed_distance = [](const BodyFrame&, const Points3& points, std::vector<Real>& out) {
+    out.resize(std::size_t(points.cols()));
+    for (Eigen::Index i = 0; i < points.cols(); ++i) out[std::size_t(i)] = points.col(i).norm() - 0.3f;
+  };
+  return style;
+}
+
 std::string temp_path(const std::string& name) { return (std::filesystem::temp_directory_path() / name).string(); }
 
 // a strip of cloth through a sphere of radius 0.3 m: the middle inside, the ends outside
@@ -92,7 +104,7 @@ TEST(ViewerGltf, EndStateCarriesStrainAndSignedDistance) {
   ClothMesh cloth = strip();
   cloth.positions.row(0) *= 1.1f;  // every spring along x stretched by 10 %
   const std::string path = temp_path("clothbench_viewer_static.glb");
-  export_viewer_gltf(path, body, cloth);
+  write_viewer_gltf(path, body, cloth, sphere_style());
   const Glb g = read_glb(path);
   ASSERT_EQ(g.doc["meshes"].size(), 2u);
   EXPECT_EQ(g.doc["meshes"][0]["name"], "body");
@@ -125,7 +137,7 @@ TEST(ViewerGltf, AnimatedFileStepsThroughTheKeptFrames) {
     frames.push_back(frame);
   }
   const std::string path = temp_path("clothbench_viewer_animated.glb");
-  export_viewer_gltf(path, body, cloth, frames, 4);  // frames 0, 2, 4, 6
+  write_viewer_gltf(path, body, cloth, sphere_style(), frames, 4);  // frames 0, 2, 4, 6
   const Glb g = read_glb(path);
   EXPECT_EQ(g.doc["extensionsRequired"], json::array({"KHR_mesh_quantization"}));
   ASSERT_EQ(g.doc["animations"].size(), 1u);
@@ -159,7 +171,7 @@ TEST(ViewerGltf, FramesOfAnotherTopologyAreRefused) {
   const BodyFrame body = make_sphere_body(Vec3::Zero(), 0.3f, 8, 16);
   const ClothMesh cloth = strip();
   std::vector<ViewerFrame> frames{{0.0, body.positions, cloth.positions}, {0.1, body.positions, Points3(3, 5)}};
-  EXPECT_THROW(export_viewer_gltf(temp_path("clothbench_viewer_bad.glb"), body, cloth, frames), std::invalid_argument);
+  EXPECT_THROW(write_viewer_gltf(temp_path("clothbench_viewer_bad.glb"), body, cloth, sphere_style(), frames), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// export_viewer_gltf: a glTF 2.0 binary written by hand (JSON chunk + BIN chunk), morph-target animation.
-#include "clothbench/bench/viewer_gltf.hpp"
+// write_viewer_gltf: a glTF 2.0 binary written by hand (JSON chunk + BIN chunk), morph-target animation.
+#include "clothbench/io/viewer_gltf.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,10 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "clothbench/bench/oracle.hpp"
-#include "clothbench/bench/report.hpp"
 #include "clothbench/io/errors.hpp"
-#include "clothbench/render/picture.hpp"
+#include "clothbench/io/text_file.hpp"
 
 namespace clothbench {
 
@@ -25,7 +23,11 @@ using nlohmann::json;
 constexpr int kFloat = 5126, kShort = 5122, kUInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
-// the panel colours of the pictures (picture.cpp)
+
+// the panel of a cloth vertex (0 for a cloth without panels)
+int cloth_vertex_panel(const ClothMesh& cloth, Eigen::Index v) {
+  return cloth.panel.empty() ? 0 : cloth.panel[std::size_t(v)];
+}
 
 class Glb {
  public:
@@ -137,7 +139,7 @@ std::vector<std::size_t> kept_frames(std::size_t count, int max_frames) {
   return kept;
 }
 
-void export_viewer_gltf(const std::string& path, const BodyFrame& body, const ClothMesh& cloth,
+void write_viewer_gltf(const std::string& path, const BodyFrame& body, const ClothMesh& cloth, const ViewerStyle& style,
                         const std::vector<ViewerFrame>& frames, int max_frames) {
   const Eigen::Index nb = body.positions.cols(), nc = cloth.positions.cols();
   for (const auto& f : frames)
@@ -169,16 +171,15 @@ void export_viewer_gltf(const std::string& path, const BodyFrame& body, const Cl
   const Tris triangles = cloth.surface_triangles();
   for (int p = 0; p < panels; ++p) {
     Part part{p < int(cloth.panel_names.size()) ? cloth.panel_names[std::size_t(p)] : "cloth", {}, {}, {}, true};
-    const Rgb colour = panel_colour(p);
-    part.colour = {colour.r / 255.f, colour.g / 255.f, colour.b / 255.f};
+    part.colour = style.panel_colour(p);
     for (Eigen::Index v = 0; v < nc; ++v)
-      if (vertex_panel(cloth, v) == p) {
+      if (cloth_vertex_panel(cloth, v) == p) {
         index[std::size_t(v)] = int(part.vertices.size());
         part.vertices.push_back(v);
       }
     for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
       const auto c = triangles.col(t);
-      if (vertex_panel(cloth, c(0)) != p) continue;
+      if (cloth_vertex_panel(cloth, c(0)) != p) continue;
       if (index[std::size_t(c(0))] < 0 || index[std::size_t(c(1))] < 0 || index[std::size_t(c(2))] < 0) continue;
       for (int k = 0; k < 3; ++k) part.triangles.push_back(std::uint32_t(index[std::size_t(c(k))]));
     }
@@ -200,7 +201,7 @@ void export_viewer_gltf(const std::string& path, const BodyFrame& body, const Cl
     }
   }
   std::vector<Real> distance;
-  if (nc > 0 && body.triangles.cols() > 0) Oracle(base_body).signed_distance(PointsView(base_cloth), distance);
+  if (nc > 0 && body.triangles.cols() > 0) style.signed_distance(base_body, base_cloth, distance);
   distance.resize(std::size_t(nc), 0.f);
   for (auto& d : distance)
     if (!std::isfinite(d)) d = 0.f;
