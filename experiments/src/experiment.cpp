@@ -16,37 +16,9 @@
 #include "clothbench/config.h"
 #include "clothbench/experiments/history.hpp"
 #include "clothbench/io/errors.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
-
-std::string MarkdownTable::str() const {
-  std::ostringstream s;
-  const auto line = [&](const std::vector<std::string>& cells) {
-    s << "|";
-    for (const auto& c : cells) s << " " << c << " |";
-    s << "\n";
-  };
-  line(header_);
-  s << "|";
-  for (std::size_t i = 0; i < header_.size(); ++i) s << "---|";
-  s << "\n";
-  for (const auto& r : rows_) line(r);
-  return s.str();
-}
-
-void linear_fit(const std::vector<double>& x, const std::vector<double>& y, double& a, double& b, double& r2) {
-  const double n = double(x.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
-  b = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  a = (sy - b * sx) / n;
-  double ss_res = 0, ss_tot = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    ss_res += std::pow(y[i] - (a + b * x[i]), 2);
-    ss_tot += std::pow(y[i] - sy / n, 2);
-  }
-  r2 = ss_tot > 0 ? 1 - ss_res / ss_tot : 1;
-}
 
 ExperimentContext::ExperimentContext(std::string out_dir, bool quick, int repetitions, int jobs)
     : out_dir_(std::move(out_dir)), quick_(quick), repetitions_(std::max(1, repetitions)), jobs_(std::max(1, jobs)) {}
@@ -203,15 +175,19 @@ bool ExperimentContext::chart(const std::string& name, nlohmann::json spec) {
 const std::vector<Experiment>& experiments() {
   static const std::vector<Experiment> all = [] {
     std::vector<Experiment> e;
-    add_dressing_experiments(e);
-    add_walking_experiments(e);
-    add_durupinar_experiments(e);
-    add_integrator_experiments(e);
+    add_dressing_t1_experiments(e);
+    add_walking_t1_experiments(e);
+    add_dressing_t2_experiments(e);
+    add_dressing_f8_experiments(e);
+    add_walking_t2_experiments(e);
+    add_walking_f8_experiments(e);
+    add_durupinar_f6_experiments(e);
+    add_integrators_experiments(e);
     add_stability_experiments(e);
-    add_collider_experiments(e);
-    add_pareto_experiments(e);
-    add_deviation_experiments(e);
-    add_picture_experiments(e);
+    add_colliders_experiments(e);
+    add_pareto_minimal_experiments(e);
+    add_deviations_experiments(e);
+    add_pictures_experiments(e);
     add_claims_experiments(e);
     return e;
   }();

@@ -8,24 +8,11 @@
 #include <vector>
 
 #include "clothbench/bench/runner.hpp"
+#include "clothbench/experiments/markdown_table.hpp"
+#include "clothbench/experiments/statistics.hpp"
 #include "clothbench/render/picture.hpp"
 
 namespace clothbench {
-
-/// A markdown table.
-class MarkdownTable {
- public:
-  explicit MarkdownTable(std::vector<std::string> header) : header_(std::move(header)) {}
-  void row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
-  std::string str() const;
-
- private:
-  std::vector<std::string> header_;
-  std::vector<std::vector<std::string>> rows_;
-};
-
-/// Least squares y = a + b x over the points, and its R^2.
-void linear_fit(const std::vector<double>& x, const std::vector<double>& y, double& a, double& b, double& r2);
 
 /// The solver regimes the reproduction tables report side by side (issue 17): ours, then the papers' clock.
 inline constexpr const char* kRegimes[] = {"stable", "papers"};
@@ -107,17 +94,5 @@ struct Experiment {
 
 /// Every experiment, in the order `reproduce` runs them.
 const std::vector<Experiment>& experiments();
-
-/// The experiments defined per file (each exp_*.cpp adds its own).
-void add_dressing_experiments(std::vector<Experiment>& out);
-void add_walking_experiments(std::vector<Experiment>& out);
-void add_durupinar_experiments(std::vector<Experiment>& out);
-void add_integrator_experiments(std::vector<Experiment>& out);
-void add_picture_experiments(std::vector<Experiment>& out);
-void add_stability_experiments(std::vector<Experiment>& out);
-void add_claims_experiments(std::vector<Experiment>& out);
-void add_pareto_experiments(std::vector<Experiment>& out);
-void add_collider_experiments(std::vector<Experiment>& out);
-void add_deviation_experiments(std::vector<Experiment>& out);
 
 }  // namespace clothbench

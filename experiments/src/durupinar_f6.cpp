@@ -4,6 +4,7 @@
 #include "clothbench/bench/report.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
 
@@ -75,7 +76,7 @@ void durupinar_f6(ExperimentContext& ctx) {
 
 }  // namespace
 
-void add_durupinar_experiments(std::vector<Experiment>& out) {
+void add_durupinar_f6_experiments(std::vector<Experiment>& out) {
   out.push_back({"durupinar-f6", "Durupinar Fig. 6", durupinar_f6});
 }
 

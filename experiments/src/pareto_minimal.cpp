@@ -8,6 +8,7 @@
 #include "clothbench/bench/drape_error.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/experiments/experiment.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
 
@@ -267,7 +268,7 @@ void minimal(ExperimentContext& ctx) {
 
 }  // namespace
 
-void add_pareto_experiments(std::vector<Experiment>& out) {
+void add_pareto_minimal_experiments(std::vector<Experiment>& out) {
   out.push_back({"pareto", "Speed against accuracy", pareto});
   out.push_back({"minimal", "The smallest model each garment needs", minimal});
 }

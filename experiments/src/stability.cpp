@@ -12,6 +12,7 @@
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
 

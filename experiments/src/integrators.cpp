@@ -7,6 +7,7 @@
 #include "clothbench/bench/report.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
 
@@ -162,7 +163,7 @@ void integrators(ExperimentContext& ctx) {
 
 }  // namespace
 
-void add_integrator_experiments(std::vector<Experiment>& out) {
+void add_integrators_experiments(std::vector<Experiment>& out) {
   out.push_back({"integrators", "Integrators and the papers' clock", integrators});
 }
 

@@ -16,6 +16,7 @@
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/simulator.hpp"
 #include "clothbench/sim/timer.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
 

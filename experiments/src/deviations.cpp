@@ -7,6 +7,7 @@
 #include "clothbench/bench/report.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/io/data_root.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
 
@@ -140,7 +141,7 @@ void deviations_experiment(ExperimentContext& ctx) {
 
 }  // namespace
 
-void add_deviation_experiments(std::vector<Experiment>& out) {
+void add_deviations_experiments(std::vector<Experiment>& out) {
   out.push_back({"deviations", "Where our defaults depart from the papers", deviations_experiment});
 }
 

@@ -14,6 +14,7 @@
 #include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/render/map_pictures.hpp"
 #include "clothbench/render/pattern_picture.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
 
@@ -106,7 +107,7 @@ void pictures(ExperimentContext& ctx) {
 
 }  // namespace
 
-void add_picture_experiments(std::vector<Experiment>& out) {
+void add_pictures_experiments(std::vector<Experiment>& out) {
   out.push_back({"pictures", "Garment meshes and body maps", pictures});
 }
 

@@ -12,6 +12,7 @@
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/brute_collider.hpp"
 #include "clothbench/sim/timer.hpp"
+#include "experiment_list.hpp"
 
 namespace clothbench {
 
@@ -180,7 +181,7 @@ void colliders(ExperimentContext& ctx) {
 
 }  // namespace
 
-void add_collider_experiments(std::vector<Experiment>& out) {
+void add_colliders_experiments(std::vector<Experiment>& out) {
   out.push_back({"colliders", "Colliders: costs and accuracy, coherence", colliders});
 }
 
