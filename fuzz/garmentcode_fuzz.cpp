@@ -9,7 +9,7 @@
 
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
-#include "garmentcode.hpp"
+#include "clothbench/io/garmentcode.hpp"
 
 namespace {
 

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "clothbench/bench/scene.hpp"
 #include "clothbench/config.h"
 #include "clothbench/io/errors.hpp"
-#include "scene.hpp"
 
 namespace {
 

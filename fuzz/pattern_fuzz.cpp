@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "clothbench/io/errors.hpp"
-#include "pattern_file.hpp"
+#include "clothbench/io/pattern_file.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "clothbench/bench/scene.hpp"
 #include "clothbench/io/errors.hpp"
-#include "scene.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // the input as scene text; a name with a folder exercises scene-relative paths

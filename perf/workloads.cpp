@@ -19,14 +19,15 @@
 #define CALLGRIND_TOGGLE_COLLECT
 #endif
 
+#include "clothbench/bench/registry.hpp"
+#include "clothbench/bench/runner.hpp"
+#include "clothbench/bench/scene.hpp"
 #include "clothbench/config.h"
 #include "clothbench/io/body_loader.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/timer.hpp"
-#include "pattern_file.hpp"
-#include "registry.hpp"
-#include "runner.hpp"
-#include "scene.hpp"
 
 namespace clothbench::perf {
 namespace {

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "clothbench/bench/oracle.hpp"
+#include "clothbench/bench/registry.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
-#include "oracle.hpp"
-#include "registry.hpp"
 
 namespace clothbench {
 namespace {

@@ -1,5 +1,5 @@
 // The body between animation frames: contacts moved back in time along the body's normal velocity.
-#include "body_between_frames.hpp"
+#include "clothbench/bench/body_between_frames.hpp"
 
 namespace clothbench {
 

@@ -1,5 +1,5 @@
 // drape_error: vertices of one cloth against the other's triangles through a uniform grid of triangle boxes.
-#include "drape_error.hpp"
+#include "clothbench/bench/drape_error.hpp"
 
 #include <algorithm>
 #include <array>

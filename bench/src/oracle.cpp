@@ -1,4 +1,4 @@
-#include "oracle.hpp"
+#include "clothbench/bench/oracle.hpp"
 
 #include <algorithm>
 #include <cmath>

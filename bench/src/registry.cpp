@@ -1,4 +1,4 @@
-#include "registry.hpp"
+#include "clothbench/bench/registry.hpp"
 
 #include <functional>
 

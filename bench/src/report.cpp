@@ -1,6 +1,6 @@
 // Result rows, machine context and atomic writes.
-#include "report.hpp"
-#include "timing_stats.hpp"
+#include "clothbench/bench/report.hpp"
+#include "clothbench/bench/timing_stats.hpp"
 
 #include <unistd.h>
 #include <algorithm>
@@ -306,27 +306,6 @@ nlohmann::json read_json_file(const std::string& path) {
   }
 }
 
-void write_text_file(const std::string& path, const std::string& text) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::path(path).parent_path();
-  std::error_code ec;
-  if (!dir.empty()) fs::create_directories(dir, ec);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError(path + ": cannot write (is the directory writable?)");
-    out << text;
-    if (!out.flush()) {
-      fs::remove(tmp, ec);
-      throw InputError(path + ": write failed");
-    }
-  }
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError(path + ": cannot rename the temporary file: " + ec.message());
-  }
-}
 
 std::string num(double v, int digits) {
   if (!std::isfinite(v)) return "-";

@@ -1,5 +1,5 @@
 // RunResult <-> JSON (run_result_json.hpp).
-#include "run_result_json.hpp"
+#include "clothbench/bench/run_result_json.hpp"
 
 #include <cstdint>
 #include <vector>

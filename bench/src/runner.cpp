@@ -1,5 +1,5 @@
 // run_scene: wires body, garments, simulator, collider and oracle (the only place that does).
-#include "runner.hpp"
+#include "clothbench/bench/runner.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,14 +8,15 @@
 #include <random>
 #include <vector>
 
+#include "clothbench/bench/body_between_frames.hpp"
+#include "clothbench/bench/registry.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
 #include "clothbench/sim/timer.hpp"
-#include "pattern_file.hpp"
-#include "registry.hpp"
-#include "body_between_frames.hpp"
 
 namespace clothbench {
 

@@ -1,5 +1,5 @@
 // Scene files: TOML through toml++, every key checked, errors located at file:line.
-#include "scene.hpp"
+#include "clothbench/bench/scene.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Sweep grids, shards, point files and merging (sweep.hpp).
-#include "sweep.hpp"
+#include "clothbench/bench/sweep.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,10 +10,10 @@
 #include <filesystem>
 #include <set>
 
+#include "clothbench/bench/report.hpp"
+#include "clothbench/bench/runner.hpp"
+#include "clothbench/bench/scene.hpp"
 #include "clothbench/io/errors.hpp"
-#include "report.hpp"
-#include "runner.hpp"
-#include "scene.hpp"
 
 namespace clothbench {
 

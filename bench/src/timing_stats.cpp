@@ -1,5 +1,5 @@
 // Aggregates and the gate's statistics (timing_stats.hpp).
-#include "timing_stats.hpp"
+#include "clothbench/bench/timing_stats.hpp"
 
 #include <algorithm>
 #include <cmath>

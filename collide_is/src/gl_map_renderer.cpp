@@ -2,7 +2,6 @@
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glext.h>
-#include <GL/osmesa.h>
 
 #include <array>
 #include <stdexcept>
@@ -10,6 +9,7 @@
 #include <vector>
 
 #include "clothbench/collide_is/map_set.hpp"
+#include "clothbench/osmesa/osmesa_context.hpp"
 
 namespace clothbench {
 namespace {
@@ -48,41 +48,9 @@ void main() {
 }
 )";
 
-// the client buffer OSMesaMakeCurrent needs even when every draw goes to an FBO [pixels]
-constexpr int kClientSide = 16;
-
-GLuint compile(GLenum type, const char* source) {
-  const GLuint s = glCreateShader(type);
-  glShaderSource(s, 1, &source, nullptr);
-  glCompileShader(s);
-  GLint ok = 0;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    std::array<char, 2048> log{};
-    glGetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    throw std::runtime_error(std::string("is-gl: shader does not compile: ") + log.data());
-  }
-  return s;
-}
-
 class GlMapRenderer final : public MapRenderer {
  public:
-  GlMapRenderer() : client_(4 * kClientSide * kClientSide) {
-    // context (core profile 3.3) made current on its own small client buffer
-    // clang-format off
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                              OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-    // clang-format on
-    ctx_ = OSMesaCreateContextAttribs(attributes, nullptr);
-    if (!ctx_) throw std::runtime_error("is-gl: no OpenGL context: OSMesaCreateContextAttribs (core 3.3) failed");
-    try {
-      set_up();
-    } catch (...) {
-      OSMesaDestroyContext(ctx_);
-      throw;
-    }
-  }
+  GlMapRenderer() : context_("is-gl") { set_up(); }
 
   ~GlMapRenderer() override {
     make_current();
@@ -90,7 +58,6 @@ class GlMapRenderer final : public MapRenderer {
     glDeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
     glDeleteVertexArrays(1, &vao_);
     glDeleteProgram(program_);
-    OSMesaDestroyContext(ctx_);
   }
 
   std::string_view name() const override { return "gl"; }
@@ -106,20 +73,8 @@ class GlMapRenderer final : public MapRenderer {
  private:
   // shaders, uniforms and vertex arrays in the new context
   void set_up() {
-    if (!OSMesaMakeCurrent(ctx_, client_.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide))
-      throw std::runtime_error("is-gl: OSMesaMakeCurrent failed");
     // shaders and their uniforms
-    const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-    program_ = glCreateProgram();
-    glAttachShader(program_, vs);
-    glAttachShader(program_, fs);
-    glLinkProgram(program_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) throw std::runtime_error("is-gl: shader program does not link");
+    program_ = osmesa::link_program(kVertexShader, kFragmentShader, "is-gl");
     u_clip_ = glGetUniformLocation(program_, "clip_from_world");
     u_encode8_ = glGetUniformLocation(program_, "encode8");
     u_max_speed_ = glGetUniformLocation(program_, "max_speed");
@@ -131,7 +86,7 @@ class GlMapRenderer final : public MapRenderer {
     if (glGetError() != GL_NO_ERROR) throw std::runtime_error("is-gl: OpenGL set-up failed");
   }
 
-  void make_current() { OSMesaMakeCurrent(ctx_, client_.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide); }
+  void make_current() { context_.make_current(); }
 
   // (re)creates the FBO when size, view count or encoding changed: size x (views x size), front
   // below back, the extra views above them
@@ -227,8 +182,7 @@ class GlMapRenderer final : public MapRenderer {
     depth_from_zbuffer(maps);
   }
 
-  OSMesaContext ctx_ = nullptr;
-  std::vector<unsigned char> client_;  // RGBA client buffer (kClientSide^2)
+  osmesa::Context context_;  // first member: destroyed after the GL objects the destructor deletes
   GLuint program_ = 0, vao_ = 0, fbo_ = 0;
   std::array<GLuint, 4> vbo_{};  // positions, normals, velocities, indices
   std::array<GLuint, 3> rbo_{};  // normal, velocity, depth

@@ -5,7 +5,8 @@
 
 #include <GL/gl.h>
 #include <GL/glext.h>
-#include <GL/osmesa.h>
+
+#include "clothbench/osmesa/osmesa_context.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -57,25 +58,8 @@ void main() {
 }
 )";
 
-// the client buffer OSMesaMakeCurrent needs even when every draw goes to an FBO [pixels]
-constexpr int kClientSide = 16;
 // colour samples per pixel asked for (fewer when the context offers fewer)
 constexpr GLint kWantedSamples = 4;
-
-GLuint compile(GLenum type, const char* source) {
-  const GLuint s = glCreateShader(type);
-  glShaderSource(s, 1, &source, nullptr);
-  glCompileShader(s);
-  GLint ok = 0;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    std::array<char, 2048> log{};
-    glGetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    glDeleteShader(s);
-    throw std::runtime_error(std::string("render: shader does not compile: ") + log.data());
-  }
-  return s;
-}
 
 void check_mesh(const DrawMesh& m, std::size_t index) {
   const Eigen::Index nv = m.positions.cols();
@@ -120,8 +104,7 @@ std::array<float, 16> clip_from_world(const OrthoCamera& c, Real d_min, Real d_m
 }  // namespace
 
 struct OffscreenRenderer::Impl {
-  OSMesaContext ctx = nullptr;
-  std::vector<unsigned char> client = std::vector<unsigned char>(4 * kClientSide * kClientSide);
+  osmesa::Context context{"render"};  // first member: destroyed after the GL objects ~OffscreenRenderer deletes
   GLuint program = 0, vao = 0;
   std::array<GLuint, 4> vbo{};  // positions, normals, colours, indices
   std::array<GLuint, 2> fbo{};  // multisampled draw target, resolved target
@@ -132,23 +115,11 @@ struct OffscreenRenderer::Impl {
   GLint u_clip = -1, u_light = -1, u_toward = -1, u_ambient = -1, u_diffuse = -1, u_two_sided = -1, u_unlit = -1,
         u_shade = -1;
 
-  void make_current() { OSMesaMakeCurrent(ctx, client.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide); }
+  void make_current() { context.make_current(); }
 
   // shaders, uniforms, vertex arrays and the sample count in the new context
   void set_up() {
-    if (!OSMesaMakeCurrent(ctx, client.data(), GL_UNSIGNED_BYTE, kClientSide, kClientSide))
-      throw std::runtime_error("render: OSMesaMakeCurrent failed");
-    const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-    program = glCreateProgram();
-    glAttachShader(program, vs);
-    glAttachShader(program, fs);
-    glLinkProgram(program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) throw std::runtime_error("render: shader program does not link");
+    program = osmesa::link_program(kVertexShader, kFragmentShader, "render");
     u_clip = glGetUniformLocation(program, "clip_from_world");
     u_light = glGetUniformLocation(program, "light");
     u_toward = glGetUniformLocation(program, "toward");
@@ -229,40 +200,25 @@ struct OffscreenRenderer::Impl {
   }
 
   // resolve the samples, read back bottom-up and flip to top row first
-  RgbBuffer read_back() {
+  Image read_back() {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo[0]);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo[1]);
     glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo[1]);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    RgbBuffer out{width, height, std::vector<std::uint8_t>(std::size_t(3) * std::size_t(width) * std::size_t(height))};
-    std::vector<std::uint8_t> bottom_up(out.rgb.size());
+    Image out(width, height);
+    std::vector<std::uint8_t> bottom_up(std::size_t(3) * std::size_t(width) * std::size_t(height));
     glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data());
     const std::size_t row = std::size_t(3) * std::size_t(width);
     for (int y = 0; y < height; ++y)
       std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(row * std::size_t(height - 1 - y)), row,
-                  out.rgb.begin() + static_cast<std::ptrdiff_t>(row * std::size_t(y)));
+                  out.data() + static_cast<std::ptrdiff_t>(row * std::size_t(y)));
     return out;
   }
 };
 
-OffscreenRenderer::OffscreenRenderer() : impl_(std::make_unique<Impl>()) {
-  // context (core profile 3.3) made current on its own small client buffer
-  // clang-format off
-  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-  // clang-format on
-  impl_->ctx = OSMesaCreateContextAttribs(attributes, nullptr);
-  if (!impl_->ctx) throw std::runtime_error("render: no OpenGL context: OSMesaCreateContextAttribs (core 3.3) failed");
-  try {
-    impl_->set_up();
-  } catch (...) {
-    OSMesaDestroyContext(impl_->ctx);
-    throw;
-  }
-}
+OffscreenRenderer::OffscreenRenderer() : impl_(std::make_unique<Impl>()) { impl_->set_up(); }
 
 OffscreenRenderer::~OffscreenRenderer() {
   impl_->make_current();
@@ -270,14 +226,13 @@ OffscreenRenderer::~OffscreenRenderer() {
   glDeleteBuffers(static_cast<GLsizei>(impl_->vbo.size()), impl_->vbo.data());
   glDeleteVertexArrays(1, &impl_->vao);
   glDeleteProgram(impl_->program);
-  OSMesaDestroyContext(impl_->ctx);
 }
 
 int OffscreenRenderer::samples() const { return std::max(1, static_cast<int>(impl_->samples)); }
 
 std::string_view OffscreenRenderer::gl_renderer() const { return impl_->renderer_name; }
 
-RgbBuffer OffscreenRenderer::render(const std::vector<DrawMesh>& meshes, const OrthoCamera& camera,
+Image OffscreenRenderer::render(const std::vector<DrawMesh>& meshes, const OrthoCamera& camera,
                                     const Lighting& lighting) {
   if (camera.width <= 0 || camera.height <= 0 || !(camera.half_width > 0) || !(camera.half_height > 0))
     throw std::invalid_argument("render: image size and camera extent must be positive (" +

@@ -1,5 +1,5 @@
 // drape_error: the symmetric vertex-to-surface distance between two drapes of any resolutions.
-#include "drape_error.hpp"
+#include "clothbench/bench/drape_error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // A RunResult through JSON and back (what a prefetch worker hands its parent): every measured field kept.
-#include "run_result_json.hpp"
+#include "clothbench/bench/run_result_json.hpp"
 
 #include <gtest/gtest.h>
 
-#include "report.hpp"
+#include "clothbench/bench/report.hpp"
 
 namespace clothbench {
 namespace {

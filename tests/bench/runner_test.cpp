@@ -1,9 +1,9 @@
 // run_scene on small scenes: sewing closes, determinism, divergence reported, accuracy from the oracle.
 #include <gtest/gtest.h>
 
+#include "clothbench/bench/body_between_frames.hpp"
+#include "clothbench/bench/runner.hpp"
 #include "clothbench/config.h"
-#include "runner.hpp"
-#include "body_between_frames.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
 
 namespace clothbench {

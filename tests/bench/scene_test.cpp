@@ -3,9 +3,9 @@
 
 #include <filesystem>
 
+#include "clothbench/bench/scene.hpp"
 #include "clothbench/config.h"
 #include "clothbench/io/errors.hpp"
-#include "scene.hpp"
 
 namespace clothbench {
 namespace {

@@ -1,5 +1,5 @@
 // Sweep grids and shards (sweep.hpp); the runs themselves: Cli.Sweep* and ctest cluster.sweep_on_slurm.
-#include "sweep.hpp"
+#include "clothbench/bench/sweep.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The gate's statistics on synthetic samples (no timing is measured here): identical distributions
 // must not be called a regression, a 1.3x slow-down with 9 repetitions must be, at the noise this
 // machine shows between repetitions.
-#include "timing_stats.hpp"
+#include "clothbench/bench/timing_stats.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,10 +6,10 @@
 #include <random>
 #include <vector>
 
+#include "clothbench/bench/oracle.hpp"
 #include "clothbench/collide_os/embree_distance.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
-#include "oracle.hpp"
 #include "surface_points.hpp"
 
 namespace clothbench {

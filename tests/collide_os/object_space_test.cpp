@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "clothbench/bench/registry.hpp"
 #include "clothbench/sim/brute_collider.hpp"
 #include "contact_compare.hpp"
-#include "registry.hpp"
 #include "surface_points.hpp"
 
 namespace clothbench {

@@ -15,12 +15,12 @@
 #include <optional>
 #include <string>
 
+#include "clothbench/bench/registry.hpp"
 #include "clothbench/collide_is/image_space_collider.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/brute_collider.hpp"
 #include "contact_compare.hpp"
-#include "registry.hpp"
 #include "surface_points.hpp"
 
 namespace clothbench {

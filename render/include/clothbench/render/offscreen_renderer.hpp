@@ -8,16 +8,10 @@
 #include <string_view>
 #include <vector>
 
+#include "clothbench/render/image.hpp"
 #include "clothbench/sim/types.hpp"
 
 namespace clothbench {
-
-/// An 8-bit RGB raster: row-major, top row first, 3 bytes per pixel (3 x width x height).
-struct RgbBuffer {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> rgb;
-};
 
 /// One mesh to draw. Normals are unit per-vertex normals (3 x nv; outward for closed meshes),
 /// colours are per-vertex RGB in [0, 1] (3 x nv). `lines` (2 x ne, optional) are edges drawn on
@@ -69,7 +63,7 @@ class OffscreenRenderer {
   /// Draws the meshes (depth-tested, near/far fitted to them) and reads the picture back.
   /// Throws std::invalid_argument on a non-positive image size or inconsistent mesh arrays, and
   /// std::runtime_error when the framebuffer of that size cannot be made.
-  RgbBuffer render(const std::vector<DrawMesh>& meshes, const OrthoCamera& camera, const Lighting& lighting = {});
+  Image render(const std::vector<DrawMesh>& meshes, const OrthoCamera& camera, const Lighting& lighting = {});
 
   /// Colour samples per pixel the framebuffer uses (1 when the context has no multisampling).
   int samples() const;

@@ -1,0 +1,145 @@
+// clothbench compare OLD.json NEW.json [--threshold PCT]: per benchmark, the Hodges-Lehmann ratio of the
+// new times to the old with its 95 % confidence interval and a one-sided Mann-Whitney U test
+// (timing_stats.hpp). A regression needs at least kMinRepetitions repetitions on both sides (rows with
+// fewer get no verdict, said so), p < 0.05 and a ratio beyond the threshold. Times are read in each row's
+// time_unit. Rows whose config_hash differs ran different settings: shown, flagged and not judged; rows
+// on one side only are listed. Exit 1 on a regression, 2 when no row could be judged.
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "clothbench/bench/report.hpp"
+#include "clothbench/bench/timing_stats.hpp"
+#include "clothbench/io/errors.hpp"
+#include "commands.hpp"
+
+namespace clothbench::cli {
+
+namespace {
+
+struct Benchmark {
+  std::vector<double> ns;          // real_time of every iteration row (one per repetition) [ns]
+  std::set<std::string> hashes;    // config_hash where the rows have one
+  std::string unit = "ms";         // the rows' time_unit, for printing
+};
+using Benchmarks = std::map<std::string, Benchmark>;
+
+// nanoseconds in one time_unit
+double ns_per(const std::string& unit, const std::string& path) {
+  const double per_ms = unit_per_ms(unit);
+  if (!std::isfinite(per_ms)) throw InputError(path + ": unknown time_unit '" + unit + "' (ns, us, ms, s)");
+  return 1e6 / per_ms;
+}
+
+// the iteration rows (aggregates are recomputed from them), by name
+Benchmarks read_benchmarks(const std::string& path) {
+  const nlohmann::json doc = read_json_file(path);
+  if (!doc.contains("benchmarks") || !doc["benchmarks"].is_array())
+    throw InputError(path + ": no \"benchmarks\" array (expected Google Benchmark's layout)");
+  Benchmarks s;
+  for (const auto& row : doc["benchmarks"]) {
+    if (row.value("run_type", "iteration") != "iteration") continue;
+    if (!row.contains("name") || !row["name"].is_string() || !row.contains("real_time") ||
+        !row["real_time"].is_number())
+      throw InputError(path + ": a row lacks name or numeric real_time");
+    const std::string name = row.contains("run_name") && row["run_name"].is_string()
+                                 ? row["run_name"].get<std::string>()
+                                 : row["name"].get<std::string>();
+    Benchmark& b = s[name];
+    b.unit = row.value("time_unit", std::string("ms"));
+    b.ns.push_back(row["real_time"].get<double>() * ns_per(b.unit, path));
+    if (row.contains("config_hash") && row["config_hash"].is_string()) b.hashes.insert(row["config_hash"].get<std::string>());
+  }
+  return s;
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+// "12.345 ms" in the old rows' unit
+std::string time_in(double ns, const std::string& unit) { return fixed(ns / ns_per(unit, ""), 4) + " " + unit; }
+
+void print_row(const std::string& name, const std::string& old_t, const std::string& new_t, const std::string& ratio,
+               const std::string& p, const std::string& verdict) {
+  std::printf("%-48s %14s %14s %24s %8s  %s\n", name.c_str(), old_t.c_str(), new_t.c_str(), ratio.c_str(), p.c_str(),
+              verdict.c_str());
+}
+
+struct Tally {
+  int regressions = 0, judged = 0, unjudged = 0, changed = 0, one_side = 0;
+};
+
+void compare_one(const std::string& name, const Benchmark& o, const Benchmark& n, double threshold, Tally& tally) {
+  const std::string before = time_in(median(o.ns), o.unit), after = time_in(median(n.ns), o.unit);
+  const TimingComparison c = compare_timings(o.ns, n.ns, threshold);
+  const std::string ratio = fixed(c.ratio, 3) + " [" + fixed(c.ratio_lo, 3) + ", " + fixed(c.ratio_hi, 3) + "]";
+  if (!o.hashes.empty() && !n.hashes.empty() && o.hashes != n.hashes) {
+    ++tally.changed;
+    print_row(name, before, after, ratio, "-", "CONFIG DIFFERS (not judged)");
+    return;
+  }
+  if (!c.judged) {
+    ++tally.unjudged;
+    print_row(name, before, after, ratio, "-",
+              "no verdict: " + std::to_string(c.n_old) + " vs " + std::to_string(c.n_new) + " repetitions (need >= " +
+                  std::to_string(kMinRepetitions) + " on both sides)");
+    return;
+  }
+  ++tally.judged;
+  tally.regressions += c.regression;
+  print_row(name, before, after, ratio, fixed(c.p_slower, 4), c.regression ? "REGRESSION" : "ok");
+}
+
+int compare(const std::string& old_path, const std::string& new_path, double threshold_pct) {
+  const Benchmarks before = read_benchmarks(old_path), after = read_benchmarks(new_path);
+  Tally tally;
+  print_row("name", "old (median)", "new (median)", "new/old [95 % CI]", "p", "verdict");
+  for (const auto& [name, o] : before) {
+    const auto it = after.find(name);
+    if (it == after.end()) {
+      ++tally.one_side;
+      print_row(name, time_in(median(o.ns), o.unit), "-", "-", "-", "only in old");
+    } else {
+      compare_one(name, o, it->second, threshold_pct / 100, tally);
+    }
+  }
+  for (const auto& [name, n] : after)
+    if (!before.count(name)) ++tally.one_side, print_row(name, "-", time_in(median(n.ns), n.unit), "-", "-", "only in new");
+  std::printf("%d regression(s) among %d judged row(s): slower by more than %.1f %% with p < 0.05 (one-sided "
+              "Mann-Whitney U); %d row(s) without a verdict, %d with another configuration, %d on one side only\n",
+              tally.regressions, tally.judged, threshold_pct, tally.unjudged, tally.changed, tally.one_side);
+  if (tally.changed)
+    std::fprintf(stderr,
+                 "clothbench compare: warning: %d row(s) ran with a different configuration (config_hash differs: "
+                 "other scene settings or --set overrides); their times are not comparable and were not judged\n",
+                 tally.changed);
+  if (tally.regressions) return 1;
+  if (tally.judged == 0) {
+    std::fprintf(stderr, "clothbench compare: no row could be judged: run both sides with --repetitions %d or more\n",
+                 kMinRepetitions);
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, Action& action) {
+  auto paths = std::make_shared<std::vector<std::string>>();
+  auto threshold = std::make_shared<double>(10.0);
+  auto* cmd = app.add_subcommand(
+      "compare", "Compare two result JSON files (>= " + std::to_string(kMinRepetitions) +
+                     " repetitions per row for a verdict); exit 1 on a regression, 2 when nothing could be judged");
+  cmd->add_option("files", *paths, "OLD.json NEW.json")->required()->expected(2);
+  cmd->add_option("--threshold", *threshold, "slow-down that counts as a regression [%]")->check(CLI::Range(0.0, 1e6));
+  cmd->callback([&action, paths, threshold] {
+    action = [paths, threshold] { return compare((*paths)[0], (*paths)[1], *threshold); };
+  });
+}
+
+}  // namespace clothbench::cli

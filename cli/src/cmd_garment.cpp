@@ -1,0 +1,160 @@
+// clothbench garment: what a pattern file meshes into (counts, sizes, seams), as text, JSON or PNG
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "clothbench/io/errors.hpp"
+#include "clothbench/io/pattern_file.hpp"
+#include "clothbench/io/pattern_loader.hpp"
+#include "clothbench/render/pattern_picture.hpp"
+#include "commands.hpp"
+
+namespace clothbench::cli {
+
+namespace {
+
+struct GarmentOptions {
+  std::string file;
+  int vertices = 0;         // target vertex count; 0 = use the spacing
+  double spacing_cm = 2.0;  // grid spacing when no target is given [cm]
+  bool json = false;
+  std::string png;
+};
+
+// One panel's summary: its vertices and its outline's extent and area.
+struct PanelInfo {
+  std::string name;
+  int vertices = 0, edges = 0;
+  Vec2d lo, hi;
+  double area_cm2 = 0;
+};
+
+std::vector<PanelInfo> panel_infos(const Pattern& pat, const MeshedPattern& m) {
+  std::vector<PanelInfo> out;
+  for (const auto& p : pat.panels) {
+    PanelInfo info;
+    info.name = p.name;
+    info.edges = p.edge_count();
+    info.lo = info.hi = p.outline[0];
+    // shoelace area and bounding box of the outline
+    for (std::size_t i = 0; i < p.outline.size(); ++i) {
+      const Vec2d a = p.outline[i], b = p.outline[(i + 1) % p.outline.size()];
+      info.lo = info.lo.cwiseMin(a);
+      info.hi = info.hi.cwiseMax(a);
+      info.area_cm2 += 0.5 * (a.x() * b.y() - a.y() * b.x());
+    }
+    info.area_cm2 = std::abs(info.area_cm2);
+    out.push_back(info);
+  }
+  for (int panel : m.mesh.panel) ++out[static_cast<std::size_t>(panel)].vertices;
+  return out;
+}
+
+// per seam: the largest distance along the seam between the pattern positions of two partners [cm]
+std::vector<double> seam_offsets(const MeshedPattern& m) {
+  std::vector<double> out;
+  std::size_t pair = 0;
+  for (int n : m.seam_pair_count) {
+    double worst = 0;
+    for (int k = 0; k < n; ++k, ++pair) worst = std::max(worst, m.seam_offset_cm[pair]);
+    out.push_back(worst);
+  }
+  return out;
+}
+
+nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m,
+                       const std::vector<PanelInfo>& infos) {
+  nlohmann::json panels = nlohmann::json::array();
+  for (const auto& p : infos)
+    panels.push_back({{"name", p.name},
+                      {"vertices", p.vertices},
+                      {"edges", p.edges},
+                      {"width_cm", p.hi.x() - p.lo.x()},
+                      {"height_cm", p.hi.y() - p.lo.y()},
+                      {"area_cm2", p.area_cm2}});
+  return {{"file", o.file},
+          {"garment", pat.name},
+          {"spacing_cm", m.spacing_cm},
+          {"panels", static_cast<int>(pat.panels.size())},
+          {"panel_details", panels},
+          {"vertices", m.mesh.vertex_count()},
+          {"springs",
+           {{"structural", m.mesh.count(SpringKind::kStructural)},
+            {"shear", m.mesh.count(SpringKind::kShear)},
+            {"flexion", m.mesh.count(SpringKind::kFlexion)}}},
+          {"seams", static_cast<int>(pat.seams.size())},
+          {"seam_pairs", static_cast<int>(m.mesh.seam_pairs.cols())},
+          {"seam_offset_max_cm", seam_offsets(m)},
+          {"quads", static_cast<int>(m.mesh.quads.cols())},
+          {"attached", static_cast<int>(m.mesh.attached.size())}};
+}
+
+void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m,
+                const std::vector<PanelInfo>& infos) {
+  std::printf("garment %s (%s)\n", pat.name.c_str(), o.file.c_str());
+  std::printf("  grid spacing   %.3f cm\n", m.spacing_cm);
+  std::printf("  panels         %zu\n", pat.panels.size());
+  for (const auto& p : infos)
+    std::printf("    %-16s %6d vertices  %6.1f x %6.1f cm  %8.1f cm^2  %d edges\n", p.name.c_str(), p.vertices,
+                p.hi.x() - p.lo.x(), p.hi.y() - p.lo.y(), p.area_cm2, p.edges);
+  std::printf("  vertices       %d\n", m.mesh.vertex_count());
+  std::printf("  springs        %d structural, %d shear, %d flexion\n", m.mesh.count(SpringKind::kStructural),
+              m.mesh.count(SpringKind::kShear), m.mesh.count(SpringKind::kFlexion));
+  const auto& q = m.mesh.quads;
+  const auto triangles = static_cast<int>((q.row(3).array() == q.row(2).array()).count());
+  std::printf("  quads          %d (%d of them triangles, on the outline)\n", static_cast<int>(q.cols()), triangles);
+  std::printf("  seams          %zu, %d seam pairs\n", pat.seams.size(), static_cast<int>(m.mesh.seam_pairs.cols()));
+  const auto offsets = seam_offsets(m);
+  for (std::size_t s = 0; s < pat.seams.size(); ++s) {
+    const Seam& seam = pat.seams[s];
+    std::printf("    %s edge %d <-> %s edge %d  %s, %d pairs, partners up to %.2f cm apart along the seam\n",
+                pat.panels[static_cast<std::size_t>(seam.panel_a)].name.c_str(), seam.edge_a,
+                pat.panels[static_cast<std::size_t>(seam.panel_b)].name.c_str(), seam.edge_b,
+                seam.reversed ? "reversed" : "aligned", m.seam_pair_count[s], offsets[s]);
+  }
+  std::printf("  attached       %zu vertices\n", m.mesh.attached.size());
+}
+
+int run_garment(const GarmentOptions& o) {
+  if (o.vertices < 0) throw InputError("--vertices must be > 0");
+  if (o.vertices == 0 && !(o.spacing_cm > 0)) throw InputError("--spacing must be > 0 cm");
+  const Pattern pat = load_pattern(o.file);
+  MeshingOptions mo;
+  if (o.vertices > 0)
+    mo.target_vertices = o.vertices;
+  else
+    mo.spacing_cm = o.spacing_cm;
+  MeshedPattern m;
+  try {
+    m = mesh_pattern(pat, mo);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(located(o.file, 0, e.what()));
+  }
+  const auto infos = panel_infos(pat, m);
+  if (o.json)
+    std::cout << to_json(o, pat, m, infos).dump(2) << "\n";
+  else
+    print_text(o, pat, m, infos);
+  if (!o.png.empty()) draw_pattern(pat, m).write_png(o.png);
+  return 0;
+}
+
+}  // namespace
+
+void add_garment_command(CLI::App& app, Action& action) {
+  auto opts = std::make_shared<GarmentOptions>();
+  auto* cmd =
+      app.add_subcommand("garment", "Mesh a pattern file (.pattern or GarmentCode .json) and print what it holds");
+  cmd->add_option("file", opts->file, "Pattern file")->required();
+  cmd->add_option("--vertices", opts->vertices, "Target vertex count of the whole garment (within a few per cent)");
+  cmd->add_option("--spacing", opts->spacing_cm, "Grid spacing [cm], used when --vertices is not given")
+      ->capture_default_str();
+  cmd->add_flag("--json", opts->json, "Print JSON (keys panels, vertices, springs, seams, seam_pairs, quads)");
+  cmd->add_option("--png", opts->png, "Draw the meshed panels and seams into this PNG file");
+  cmd->callback([opts, &action] { action = [opts] { return run_garment(*opts); }; });
+}
+
+}  // namespace clothbench::cli

@@ -1,0 +1,142 @@
+// clothbench reproduce [--only ID,...] [--out DIR] [--quick] [--repetitions N]
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "clothbench/bench/report.hpp"
+#include "clothbench/experiments/experiment.hpp"
+#include "clothbench/experiments/history.hpp"
+#include "clothbench/experiments/html_report.hpp"
+#include "clothbench/io/errors.hpp"
+#include "clothbench/sim/timer.hpp"
+#include "commands.hpp"
+
+namespace clothbench::cli {
+
+namespace {
+
+struct ReproduceArgs {
+  std::vector<std::string> only;
+  std::string out = "results";
+  bool quick = false;
+  int repetitions = 1;
+  int jobs = 1;
+};
+
+// results/README.md's last section: each experiment's run against its previous one in history.jsonl, and
+// its trend chart history-ID.png
+std::string since_previous(ExperimentContext& ctx, const std::vector<std::pair<std::string, double>>& done) {
+  const std::vector<nlohmann::json> history = read_history(ctx.path("history.jsonl"));
+  MarkdownTable t({"ID", "previous run", "time per iteration, this / previous (geometric mean; range)",
+                   "configurations compared", "verdicts changed", "added / removed", "trend"});
+  for (const auto& [id, seconds] : done) {
+    const std::vector<nlohmann::json> entries = entries_of(history, id, ctx.quick());
+    if (entries.empty()) continue;
+    const std::string chart = "history-" + id;
+    const std::string trend = ctx.chart(chart, trend_chart(entries, id)) ? "[" + chart + ".png](" + chart + ".png)" : "-";
+    if (entries.size() < 2) {
+      t.row({id, "none (first run in the history)", "-", "-", "-", "-", trend});
+      continue;
+    }
+    const nlohmann::json& before = entries[entries.size() - 2];
+    const HistoryChange c = compare_entries(before, entries.back());
+    t.row({id, before.value("git_sha", "?") + ", " + before.value("date", "?"),
+           c.common ? num(c.time_ratio, 3) + " (" + num(c.ratio_min, 2) + "-" + num(c.ratio_max, 2) + ")" : "-",
+           std::to_string(c.common), std::to_string(c.verdict_changed),
+           std::to_string(c.added) + " / " + std::to_string(c.removed), trend});
+  }
+  return "## Since the previous run\n\nEvery `reproduce` appends each experiment's key figures (per configuration: time "
+         "per iteration, CD&R, CS, accuracy, verdict) with the git SHA and date to `history.jsonl`. Below, this run "
+         "against the previous run of the same experiment (quick runs only against quick runs); wall times on this shared machine "
+         "drift by about ±20 % between runs, so only changes well beyond that, or changed verdicts, mean something "
+         "(`clothbench compare` with repetitions is the statistical gate).\n\n" +
+         t.str();
+}
+
+// results/README.md: the index of every experiment and the machine
+void write_index(ExperimentContext& ctx, const std::string& out, const std::vector<std::pair<std::string, double>>& done,
+                 bool quick) {
+  const nlohmann::json c = machine_context();
+  std::ostringstream md;
+  md << "# clothbench results\n\nWritten by `clothbench reproduce" << (quick ? " --quick" : "")
+     << "` (`make reproduce`); never edited by hand. Regenerate with `make reproduce`, or one experiment with "
+        "`build/bin/clothbench reproduce --only ID`.\n\n"
+     << "Machine: " << c["cpu_model"].get<std::string>() << ", " << c["num_cpus"] << " cores, host "
+     << c["host_name"].get<std::string>() << "; compiler " << c["compiler"].get<std::string>() << ", "
+     << c["build_type"].get<std::string>() << ", flags `" << c["cxx_flags"].get<std::string>() << "`; git "
+     << c["git_sha"].get<std::string>() << "; " << c["date"].get<std::string>() << ".\n\n";
+  MarkdownTable t({"ID", "what", "table", "data", "wall time [s]"});
+  for (const auto& [id, seconds] : done) {
+    std::string title;
+    for (const auto& e : experiments())
+      if (e.id == id) title = e.title;
+    t.row({id, title, "[" + id + ".md](" + id + ".md)", "[" + id + ".json](" + id + ".json)", num(seconds, 1)});
+  }
+  md << t.str() << "\nCharts are `ID.png`; pictures of dressed bodies are under `pictures/`; maps under `maps/`; "
+     << "garment meshes under `garments/`.\n\n"
+     << since_previous(ctx, done);
+  write_text_file(out + "/README.md", md.str());
+}
+
+// the experiment IDs of `reproduce --help`, from the registry, with their titles
+std::string experiment_list() {
+  std::size_t width = 0;
+  for (const auto& e : experiments()) width = std::max(width, e.id.size());
+  std::ostringstream s;
+  s << "Experiments (--only ID,...; in the order they run):\n";
+  for (const auto& e : experiments()) s << "  " << e.id << std::string(width + 2 - e.id.size(), ' ') << e.title << "\n";
+  return s.str();
+}
+
+int reproduce(const ReproduceArgs& a) {
+  std::set<std::string> wanted;
+  for (const auto& list : a.only) {
+    std::stringstream s(list);
+    for (std::string id; std::getline(s, id, ',');) wanted.insert(id);
+  }
+  std::string known;
+  for (const auto& e : experiments()) known += (known.empty() ? "" : ", ") + e.id;
+  for (const auto& id : wanted) {
+    bool found = false;
+    for (const auto& e : experiments()) found = found || e.id == id;
+    if (!found) throw InputError("--only: unknown experiment '" + id + "' (known: " + known + ")");
+  }
+  ExperimentContext ctx(a.out, a.quick, a.repetitions, a.jobs);
+  // fail early on an unwritable output folder
+  write_text_file(ctx.path(".write-test"), "");
+  std::remove(ctx.path(".write-test").c_str());
+  std::vector<std::pair<std::string, double>> done;
+  for (const auto& e : experiments()) {
+    if (!wanted.empty() && !wanted.count(e.id)) continue;
+    std::cerr << "[" << e.id << "] " << e.title << "\n";
+    Stopwatch clock;
+    e.run(ctx);
+    done.emplace_back(e.id, clock.ms() / 1e3);
+    std::cerr << "[" << e.id << "] done in " << num(clock.ms() / 1e3, 1) << " s\n";
+  }
+  if (wanted.empty()) write_index(ctx, a.out, done, a.quick);
+  // results/index.html from whatever the folder now holds (screenshots of it on full runs)
+  write_html_report(a.out, wanted.empty());
+  return 0;
+}
+
+}  // namespace
+
+void add_reproduce_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<ReproduceArgs>();
+  auto* cmd = app.add_subcommand("reproduce", "Regenerate the papers' tables and charts with our figures beside theirs");
+  cmd->add_option("--only", args->only, "comma-separated experiment IDs (default: all; listed below)");
+  cmd->footer(experiment_list);
+  cmd->add_option("--out", args->out, "output folder")->capture_default_str();
+  cmd->add_flag("--quick", args->quick, "fewer iterations and sizes, same code paths (smoke test)");
+  cmd->add_option("--repetitions", args->repetitions, "runs per configuration: tables show the median run; the JSON has every run's row and the aggregates (mean, median, stddev, cv)")->check(CLI::Range(1, 100));
+  cmd->add_option("--jobs", args->jobs,
+                  "worker processes for the grids of pareto and minimal (default 1: every run in this process, "
+                  "the timings of results/); more run faster and measure under shared cores")
+      ->check(CLI::Range(1, 256));
+  cmd->callback([&action, args] { action = [args] { return reproduce(*args); }; });
+}
+
+}  // namespace clothbench::cli

@@ -1,0 +1,118 @@
+// walking-f8: walking paper Fig. 8, a tablecloth on a moving sphere (averaging, the directional rule as stated and
+// ours).
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "clothbench/bench/oracle.hpp"
+#include "clothbench/bench/report.hpp"
+#include "clothbench/bench/viewer_export.hpp"
+#include "clothbench/config.h"
+#include "clothbench/experiments/experiment.hpp"
+#include "clothbench/experiments/paper_figures.hpp"
+#include "clothbench/io/data_root.hpp"
+#include "clothbench/render/picture.hpp"
+#include "experiment_list.hpp"
+
+namespace clothbench {
+
+namespace {
+
+// how far the cloth's centre trails the sphere's centre along +x, the motion [cm]
+double lag_cm(const Points3& cloth, const BodyFrame& sphere) {
+  return 100 * double(bounding_box(sphere.positions).center().x() - cloth.rowwise().mean().x());
+}
+
+// the share of the cloth's vertices within the collider's tol of the body (touching it) [%]
+double touching_pct(const BodyFrame& body, const Points3& cloth, Real tol) {
+  const Oracle oracle(body);
+  std::vector<Real> d;
+  oracle.signed_distance(PointsView(cloth), d);
+  const auto n = std::count_if(d.begin(), d.end(), [&](Real x) { return x < tol; });
+  return d.empty() ? 0 : 100.0 * double(n) / double(d.size());
+}
+
+void walking_f8(ExperimentContext& ctx) {
+  MarkdownTable t({"limit", "threshold", "strain max during motion [%]", "strain max end [%]", "strain p99 end [%]",
+                   "lag behind the sphere [cm]", "touching the sphere [%] end", "inside [%] end", "status"});
+  std::vector<Image> pictures;
+  nlohmann::json lag_series = nlohmann::json::array(), touch_series = nlohmann::json::array();
+  const std::pair<const char*, const char*> limits[] = {{"none", "none"},
+                                                        {"velocity", "velocity averaging (Eq. 5)"},
+                                                        {"directional-literal", "directional, as stated (Eq. 6)"},
+                                                        {"directional", "directional, ours (guarded)"}};
+  const Real tol = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/walking/tablecloth_sphere.toml")
+                       .collider_options.tol;
+  for (const auto& [limit, label] : limits) {
+    std::vector<std::string> sets{std::string("solver.limit=") + limit};
+    if (ctx.quick()) sets.push_back("stop.max_iterations=60");
+    // every frame: the lag and the share touching the sphere, outside the measured time
+    std::vector<double> times, lags, touching;
+    RunOptions options;
+    options.on_frame = [&](long frame, double at, const BodyFrame& body, const Simulator& sim) {
+      if (frame == 1) times.clear(), lags.clear(), touching.clear();
+      times.push_back(at);
+      lags.push_back(lag_cm(sim.positions(), body));
+      touching.push_back(touching_pct(body, sim.positions(), tol));
+    };
+    const RunResult& r = ctx.run("walking/tablecloth_sphere.toml", "sphere", sets, options);
+    std::string status = r.divergence ? "diverged at iteration " + std::to_string(r.divergence->iteration) + " (" +
+                                            to_string(r.divergence->phase) + ", " + r.divergence->reason + ")"
+                                      : "ok";
+    const auto end_value = [&](double v) { return r.divergence ? std::string("-") : num(100 * v, 1); };
+    t.row({label, "5 %", r.frames ? num(100 * r.animate_strain_max, 1) : "-", end_value(r.strain_max),
+           end_value(r.strain_p99), r.divergence ? "-" : num(lag_cm(r.mesh.positions, r.final_body), 1),
+           r.divergence || touching.empty() ? "-" : num(touching.back(), 1),
+           r.divergence ? "-" : num(r.accuracy.inside_pct, 2), status});
+    nlohmann::json extra = nlohmann::json::object();
+    if (r.frames) extra["animate_strain_max"] = r.animate_strain_max;
+    if (!r.divergence) extra["lag_cm"] = lag_cm(r.mesh.positions, r.final_body);
+    ctx.add_run(r, std::string("walking-f8/tablecloth/") + limit, extra);
+    if (!times.empty()) {
+      lag_series.push_back({{"label", label}, {"x", times}, {"y", lags}, {"style", "-"}});
+      touch_series.push_back({{"label", label}, {"x", times}, {"y", touching}, {"style", "-"}});
+    }
+    if (!r.divergence) pictures.push_back(ctx.pictures().render(r.final_body, r.mesh, 300, View::kFront));
+  }
+  side_by_side(pictures).write_png(ctx.path("pictures/walking-f8.png"));
+  std::string charts;
+  if (ctx.chart("walking-f8-lag", {{"title", "walking-f8: the cloth's centroid behind the sphere's centre along x"},
+                                   {"xlabel", "time of the motion [s]"},
+                                   {"ylabel", "lag [cm]"},
+                                   {"series", lag_series}}))
+    charts += "![lag against time](walking-f8-lag.png) ";
+  if (ctx.chart("walking-f8-touching", {{"title", "walking-f8: cloth vertices within tol of the sphere"},
+                                        {"xlabel", "time of the motion [s]"},
+                                        {"ylabel", "touching [%]"},
+                                        {"series", touch_series}}))
+    charts += "![touching against time](walking-f8-touching.png)";
+  ctx.write(
+      "walking-f8", "Walking paper Fig. 8: tablecloth on a moving sphere",
+      "A square tablecloth draped on a sphere that then moves along +x at 1 m/s for 1 s "
+      "(scenes/walking/tablecloth_sphere.toml; analytic sphere collider, so the comparison isolates the "
+      "super-elasticity limit). Limits: none; velocity averaging (walking Eq. 5); the directional modification as "
+      "the paper states it (walking Eq. 6: springs with |cos alpha| < 0.3 to v_dir average, on the others the rear "
+      "point takes the front one's velocity); and ours, which adds two rules (a held rear point, attached or in "
+      "contact, makes the front follow it; catching up that would add kinetic energy to the pair averages "
+      "instead). Lag = distance from the cloth's centroid to the sphere's centre along the motion; touching = "
+      "vertices within the collider's tol of the sphere. Both are charted at every frame of the motion; a cloth "
+      "that slides off the sphere shows as touching falling to 0 while the lag grows.\n\n" +
+          t.str() + "\n" + charts +
+          "\n\nWhat the charts show about the lag: with our directional rule the cloth holds to the moving sphere at "
+          "first (the most touching of the four), then slides off backwards over its top: touching falls to 0 and the "
+          "lag grows to the table's figure; the rule as stated does not get through the drape. The paper's Fig. 8 "
+          "shows the directional cloth following the sphere: neither reading of Eq. 6 reproduces that here." + "\n\n![" +
+          "the rows that did not diverge, in order](pictures/walking-f8.png)\n\nPictures drawn by " +
+          ctx.pictures().name() + ".\n");
+}
+
+}  // namespace
+
+void add_walking_f8_experiments(std::vector<Experiment>& out) {
+  out.push_back({"walking-f8", "Walking paper Fig. 8", walking_f8});
+}
+
+}  // namespace clothbench

@@ -1,0 +1,63 @@
+#pragma once
+// What the parts of garment meshing share (sim/src): outline geometry (pattern_geometry.cpp), the panel
+// grid (panel_grid.cpp) and the seam alignment (seam_alignment.cpp), put together by garment.cpp.
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "clothbench/sim/garment.hpp"
+
+namespace clothbench::garment_detail {
+
+// the closest point of an outline to a point: where, how far, on which segment, at which fraction of it
+struct Closest {
+  Vec2d point;
+  double dist = 1e300;
+  int segment = -1;
+  double t = 0;
+};
+
+// the closest point of the closed outline `o` to `p`
+Closest closest_on_outline(const std::vector<Vec2d>& o, const Vec2d& p);
+// whether `p` lies inside the closed outline `o` (even-odd rule)
+bool inside(const std::vector<Vec2d>& o, const Vec2d& p);
+// the z component of a x b
+double cross(const Vec2d& a, const Vec2d& b);
+// Twice the signed area of a closed outline (shoelace): > 0 counter-clockwise [cm^2].
+double twice_signed_area(const std::vector<Vec2d>& o);
+
+// One meshed panel: vertices (uv), which are on the outline, per edge the boundary vertices
+// ordered by their arc-length position along the edge, and the grid's springs and quads.
+struct PanelGrid {
+  std::vector<Vec2d> uv;
+  std::vector<std::uint8_t> boundary;
+  std::vector<std::vector<std::pair<double, int>>> edge_vertices;  // (arc position, local vertex)
+  std::vector<std::array<int, 2>> springs;
+  std::vector<SpringKind> kinds;
+  std::vector<std::array<int, 4>> quads;
+};
+
+// the panel's grid at spacing h: nodes inside the outline, the ring around them snapped onto it
+PanelGrid grid_panel(const Panel& p, double h);
+// The panel's cloth from its final uv: positions (u, v, 0) [m], rest lengths from the pattern,
+// a quarter of each adjacent cell's area per vertex.
+ClothMesh panel_mesh(const Panel& p, const PanelGrid& g, double h);
+
+// Sewn edges get their boundary vertices at matching arc fractions, so every seam pair joins the
+// same pattern point on both sides (a mismatch would leave a gap the seam can never close). The
+// first seam to touch an edge spreads the shorter run evenly and moves the other onto it; an edge
+// already placed by an earlier seam stays fixed.
+void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& grids);
+// Pairs two vertex runs by arc position (fraction of the edge length, so edges of different
+// length or count match): every vertex of the shorter run gets the vertex of the longer run
+// nearest in relative position (Durupinar section 2: closest vertex on the second panel); driving
+// from the shorter run never sews two neighbours of one panel onto one point.
+std::vector<std::array<int, 2>> match_runs(const std::vector<std::pair<double, int>>& a,
+                                           const std::vector<std::pair<double, int>>& b, bool reversed);
+// How far apart along the seam the partners of a pair sit in the pattern [cm]: the difference of
+// their arc fractions (one reversed) times the mean length of the two edges.
+double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::pair<double, int>>& ra,
+                      const std::vector<std::pair<double, int>>& rb, const std::array<int, 2>& pair);
+
+}  // namespace clothbench::garment_detail

@@ -1,0 +1,177 @@
+// The panel grid of garment meshing (dressing section 3): grid nodes inside each panel's outline, the ring
+// around them snapped onto it, springs, quads, and the panel's cloth.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "garment_internal.hpp"
+
+namespace clothbench {
+
+namespace {
+
+using namespace garment_detail;
+
+// Grid nodes this close to the outline lie on it [fraction of the grid spacing]: rounding of the node
+// positions, far below any distance the mesher resolves.
+constexpr double kOnOutline = 1e-6;
+
+// Adds a boundary vertex at `q` to every edge it lies on (corners belong to two), keyed by its
+// arc position along the edge as a fraction of the edge length.
+void add_to_edges(const Panel& p, const Vec2d& q, int v, std::vector<std::vector<std::pair<double, int>>>& ev) {
+  const int n = static_cast<int>(p.outline.size());
+  for (int e = 0; e < p.edge_count(); ++e) {
+    const int s0 = p.edge_begin[static_cast<std::size_t>(e)];
+    const int s1 = e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n;
+    double len = 0, at = -1;
+    for (int s = s0; s < s1; ++s) {
+      const Vec2d a = p.outline[static_cast<std::size_t>(s)], b = p.outline[static_cast<std::size_t>((s + 1) % n)];
+      const double l = (b - a).norm();
+      const double t = l > 0 ? std::clamp((q - a).dot(b - a) / (l * l), 0.0, 1.0) : 0.0;
+      if (at < 0 && (a + t * (b - a) - q).norm() < 1e-9 * (1 + l)) at = len + t * l;
+      len += l;
+    }
+    if (at >= 0 && len > 0) ev[static_cast<std::size_t>(e)].push_back({at / len, v});
+  }
+}
+
+// Grid nodes inside the outline, and the ring around them snapped onto the outline.
+void place_grid_vertices(const Panel& p, double h, PanelGrid& g, std::vector<int>& id, int& nx, int& ny) {
+  Vec2d lo = p.outline[0], hi = p.outline[0];
+  for (const auto& q : p.outline) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  // grid cells across the box; a spacing that divides it exactly counts exactly, not one more for
+  // the rounding of the division (that would shift the centred grid by h/2 off the outline)
+  auto cells = [&](double extent) { return static_cast<int>(std::ceil(extent / h - kOnOutline)); };
+  nx = cells(hi.x() - lo.x()) + 3;
+  ny = cells(hi.y() - lo.y()) + 3;
+  // the grid is centred on the outline's box, so mirrored panels get mirrored vertices
+  const Vec2d origin = 0.5 * (lo + hi) - 0.5 * h * Vec2d(nx - 1, ny - 1);
+  auto node = [&](int i, int j) -> Vec2d { return origin + h * Vec2d(i, j); };
+  id.assign(static_cast<std::size_t>(nx * ny), -1);
+  // inside nodes farther than h/4 from the outline are kept as they are; nodes on the outline (within
+  // rounding: a spacing that divides a straight edge's position) are kept too, as boundary vertices,
+  // whatever the inside test says there. The ring below would miss such a node at a corner: its
+  // 4-neighbours lie on the outline too, none of them an inside node
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const Vec2d q = node(i, j);
+      const Closest c = closest_on_outline(p.outline, q);
+      const bool on = c.dist <= kOnOutline * h;
+      if (!on && !(c.dist > 0.25 * h && inside(p.outline, q))) continue;
+      id[static_cast<std::size_t>(j * nx + i)] = static_cast<int>(g.uv.size());
+      g.uv.push_back(on ? c.point : q);
+      g.boundary.push_back(on ? 1 : 0);
+      if (on) add_to_edges(p, c.point, id[static_cast<std::size_t>(j * nx + i)], g.edge_vertices);
+    }
+  // the ring around them is snapped onto the outline (Durupinar's boundary set, made smooth)
+  auto near_kept = [&](const Vec2d& q) {
+    for (const auto& u : g.uv)
+      if ((u - q).norm() < 0.3 * h) return true;
+    return false;
+  };
+  for (int j = 1; j + 1 < ny; ++j)
+    for (int i = 1; i + 1 < nx; ++i) {
+      const auto k = static_cast<std::size_t>(j * nx + i);
+      if (id[k] >= 0) continue;
+      const bool ring = id[k - 1] >= 0 || id[k + 1] >= 0 || id[k - static_cast<std::size_t>(nx)] >= 0 ||
+                        id[k + static_cast<std::size_t>(nx)] >= 0;
+      if (!ring) continue;
+      const Closest c = closest_on_outline(p.outline, node(i, j));
+      if (near_kept(c.point)) continue;
+      id[k] = static_cast<int>(g.uv.size());
+      g.uv.push_back(c.point);
+      g.boundary.push_back(1);
+      add_to_edges(p, c.point, id[k], g.edge_vertices);
+    }
+  for (auto& ev : g.edge_vertices) std::sort(ev.begin(), ev.end());
+}
+
+}  // namespace
+
+namespace garment_detail {
+
+PanelGrid grid_panel(const Panel& p, double h) {
+  PanelGrid g;
+  g.edge_vertices.resize(static_cast<std::size_t>(p.edge_count()));
+  std::vector<int> id;
+  int nx = 0, ny = 0;
+  place_grid_vertices(p, h, g, id, nx, ny);
+  // springs and quads between kept grid neighbours
+  auto at = [&](int i, int j) {
+    return (i < 0 || j < 0 || i >= nx || j >= ny) ? -1 : id[static_cast<std::size_t>(j * nx + i)];
+  };
+  auto add = [&](int a, int b, SpringKind kind) {
+    if (a < 0 || b < 0) return;
+    g.springs.push_back({a, b});
+    g.kinds.push_back(kind);
+  };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = at(i, j);
+      if (a < 0) continue;
+      add(a, at(i + 1, j), SpringKind::kStructural);
+      add(a, at(i, j + 1), SpringKind::kStructural);
+      add(a, at(i + 1, j + 1), SpringKind::kShear);
+      add(at(i + 1, j), at(i, j + 1), SpringKind::kShear);
+      add(a, at(i + 2, j), SpringKind::kFlexion);
+      add(a, at(i, j + 2), SpringKind::kFlexion);
+    }
+  // cells: four kept corners make a quad; three (a cell the outline cuts, along a slanted or curved
+  // edge) make a triangle, stored as a quad whose last corner repeats its third; left out, they would
+  // leave a staircase of holes along the outline, in the pictures, the face queries and the masses
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      std::array<int, 4> c{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+      const auto kept = std::remove(c.begin(), c.end(), -1);
+      if (kept - c.begin() == 3) c[3] = c[2];
+      if (kept - c.begin() >= 3) g.quads.push_back(c);
+    }
+  return g;
+}
+
+// The panel's cloth from its final uv: positions (u, v, 0) [m], rest lengths from the pattern,
+// a quarter of each adjacent cell's area per vertex.
+ClothMesh panel_mesh(const Panel& p, const PanelGrid& g, double h) {
+  ClothMesh m;
+  const auto nv = static_cast<Eigen::Index>(g.uv.size());
+  m.positions.resize(3, nv);
+  for (Eigen::Index v = 0; v < nv; ++v)
+    m.positions.col(v) = Vec3(static_cast<Real>(g.uv[static_cast<std::size_t>(v)].x() / 100),
+                              static_cast<Real>(g.uv[static_cast<std::size_t>(v)].y() / 100), 0);
+  std::vector<Eigen::Index> kept;
+  for (std::size_t s = 0; s < g.springs.size(); ++s)
+    if ((g.uv[static_cast<std::size_t>(g.springs[s][0])] - g.uv[static_cast<std::size_t>(g.springs[s][1])]).norm() >=
+        1e-4)
+      kept.push_back(static_cast<Eigen::Index>(s));
+  m.springs.resize(2, static_cast<Eigen::Index>(kept.size()));
+  m.rest_length.resize(static_cast<Eigen::Index>(kept.size()));
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    const auto& e = g.springs[static_cast<std::size_t>(kept[k])];
+    m.springs.col(static_cast<Eigen::Index>(k)) << e[0], e[1];
+    m.rest_length[static_cast<Eigen::Index>(k)] =
+        static_cast<Real>((g.uv[static_cast<std::size_t>(e[0])] - g.uv[static_cast<std::size_t>(e[1])]).norm() / 100.0);
+    m.kind.push_back(g.kinds[static_cast<std::size_t>(kept[k])]);
+  }
+  m.quads.resize(4, static_cast<Eigen::Index>(g.quads.size()));
+  m.vertex_area = Scalars::Zero(nv);
+  for (std::size_t q = 0; q < g.quads.size(); ++q) {
+    const auto& c = g.quads[q];
+    m.quads.col(static_cast<Eigen::Index>(q)) << c[0], c[1], c[2], c[3];
+    double area = 0;  // shoelace [cm^2]
+    for (std::size_t k = 0; k < 4; ++k)
+      area += cross(g.uv[static_cast<std::size_t>(c[k])], g.uv[static_cast<std::size_t>(c[(k + 1) % 4])]);
+    const std::size_t corners = c[3] == c[2] ? 3 : 4;  // a triangle's area goes to its three corners
+    for (std::size_t k = 0; k < corners; ++k)
+      m.vertex_area[c[k]] += static_cast<Real>(std::abs(area) / 2e4 / double(corners));
+  }
+  const Real floor_area = static_cast<Real>(0.05 * h * h / 1e4);  // vertices touching no cell
+  for (Eigen::Index v = 0; v < nv; ++v) m.vertex_area[v] = std::max(m.vertex_area[v], floor_area);
+  m.panel.assign(static_cast<std::size_t>(nv), 0);
+  m.panel_names = {p.name};
+  m.seam_pairs.resize(2, 0);
+  return m;
+}
+
+}  // namespace garment_detail
+
+}  // namespace clothbench

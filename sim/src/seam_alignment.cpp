@@ -1,0 +1,244 @@
+// Seam alignment of garment meshing: sewn edges get their boundary vertices at matching arc fractions,
+// seam ends snapped onto corners, and the runs of two edges paired (Durupinar section 2).
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+
+#include "garment_internal.hpp"
+
+namespace clothbench {
+
+namespace {
+
+using namespace garment_detail;
+
+// Outline indices [s0, s1) of the segments of edge e.
+std::pair<int, int> edge_segments(const Panel& p, int e) {
+  const int n = static_cast<int>(p.outline.size());
+  return {p.edge_begin[static_cast<std::size_t>(e)],
+          e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n};
+}
+
+Vec2d outline_point(const Panel& p, int s) { return p.outline[static_cast<std::size_t>(s) % p.outline.size()]; }
+
+double edge_length(const Panel& p, int e) {
+  const auto [s0, s1] = edge_segments(p, e);
+  double len = 0;
+  for (int s = s0; s < s1; ++s) len += (outline_point(p, s + 1) - outline_point(p, s)).norm();
+  return len;
+}
+
+// The point at arc fraction t (0..1) of edge e of panel p.
+Vec2d point_on_edge(const Panel& p, int e, double t) {
+  const auto [s0, s1] = edge_segments(p, e);
+  double left = t * edge_length(p, e);
+  for (int s = s0; s < s1; ++s) {
+    const Vec2d a = outline_point(p, s), b = outline_point(p, s + 1);
+    const double l = (b - a).norm();
+    if (left <= l || s + 1 == s1) return l > 0 ? Vec2d(a + std::min(left / l, 1.0) * (b - a)) : a;
+    left -= l;
+  }
+  return outline_point(p, s1);
+}
+
+// Edge runs whose vertices sit at arc fractions 0 or 1 are panel corners: they stay.
+bool is_corner(double t) { return t < 1e-9 || t > 1 - 1e-9; }
+
+// Moves the vertices of a run (sorted by arc fraction) to new fractions: corners stay, `anchors`
+// (run index -> fraction) are met exactly, and the others spread evenly by index between them;
+// a run's free ends lie half a spacing from the edge's ends.
+void respace_run(std::vector<std::pair<double, int>>& run, std::map<int, double> anchors) {
+  const int n = static_cast<int>(run.size());
+  if (n == 0) return;
+  std::vector<std::pair<double, double>> knots;  // (index, fraction), ascending in both
+  knots.push_back(is_corner(run.front().first) ? std::pair{0.0, run.front().first} : std::pair{-0.5, 0.0});
+  for (int i = 0; i < n; ++i)
+    if (is_corner(run[static_cast<std::size_t>(i)].first)) anchors.erase(i);
+  for (const auto& [i, t] : anchors)
+    if (t > knots.back().second && i > knots.back().first) knots.push_back({double(i), t});
+  const auto last = is_corner(run.back().first) ? std::pair{double(n - 1), run.back().first} : std::pair{n - 0.5, 1.0};
+  while (knots.size() > 1 && !(knots.back().first < last.first && knots.back().second < last.second)) knots.pop_back();
+  knots.push_back(last);
+  std::size_t k = 0;
+  for (int i = 0; i < n; ++i) {
+    if (is_corner(run[static_cast<std::size_t>(i)].first)) continue;
+    while (k + 2 < knots.size() && knots[k + 1].first < i) ++k;
+    const auto [i0, t0] = knots[k];
+    const auto [i1, t1] = knots[k + 1];
+    run[static_cast<std::size_t>(i)].first = t0 + (t1 - t0) * (i - i0) / (i1 - i0);
+  }
+}
+
+// Anchors of a free run on a fixed one: the smaller run is matched index by index to the larger
+// (monotone, nearest in arc fraction), and the free run's matched vertices take the fixed
+// partners' fractions (1 - t when the seam is reversed).
+std::map<int, double> seam_anchors(const std::vector<std::pair<double, int>>& fixed,
+                                   const std::vector<std::pair<double, int>>& free_run, bool reversed) {
+  std::vector<double> f;  // fixed fractions in the free run's direction, ascending
+  for (const auto& [t, v] : fixed) f.push_back(reversed ? 1 - t : t);
+  std::sort(f.begin(), f.end());
+  const bool free_smaller = free_run.size() <= f.size();
+  const std::size_t m = std::min(free_run.size(), f.size()), big = std::max(free_run.size(), f.size());
+  std::map<int, double> anchors;
+  std::size_t lo = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    const double t = free_smaller ? free_run[k].first : f[k];
+    std::size_t best = lo;
+    for (std::size_t j = lo; j + (m - k) <= big; ++j) {
+      const double tj = free_smaller ? f[j] : free_run[j].first;
+      const double tb = free_smaller ? f[best] : free_run[best].first;
+      if (std::abs(tj - t) < std::abs(tb - t)) best = j;
+    }
+    lo = best + 1;
+    if (free_smaller)
+      anchors[static_cast<int>(k)] = f[best];
+    else
+      anchors[static_cast<int>(best)] = f[k];
+  }
+  return anchors;
+}
+
+// Whether some vertex of the panel sits at pattern point p.
+bool occupied(const PanelGrid& g, const Vec2d& p) {
+  return std::any_of(g.uv.begin(), g.uv.end(), [&](const Vec2d& q) { return (q - p).norm() < 1e-9; });
+}
+
+// Whether vertex v lies on more than one edge of the panel (a corner, or where edges touch).
+bool on_several_edges(const PanelGrid& g, int v) {
+  int runs = 0;
+  for (const auto& run : g.edge_vertices)
+    runs += std::any_of(run.begin(), run.end(), [&](const auto& tv) { return tv.second == v; });
+  return runs > 1;
+}
+
+// The edge that shares edge e's end `t` (0: its start, 1: its end) as a corner: the one before or after it
+// on the closed outline (-1 for a panel of one edge, whose ends meet each other).
+int edge_at_corner(const Panel& p, int e, double t) {
+  const int n = p.edge_count();
+  if (n < 2) return -1;
+  return t > 0.5 ? (e + 1) % n : (e + n - 1) % n;
+}
+
+// Where one edge of a seam has a vertex on a corner and the other's end vertex lies less than a
+// grid spacing h short of the matching corner, that vertex moves onto the corner (when its panel has no vertex there
+// and its edge was not aligned by an earlier seam), so the seam's end pairs join corner to corner. The moved
+// vertex now lies on the edge that meets this one at the corner too, and joins that edge's run there:
+// otherwise a later seam along that edge pairs its own end vertex, a fraction of a spacing from the
+// corner, with what is sewn to the corner, and the two seams together draw two neighbouring vertices of
+// one panel onto one point (their spring squeezed to nothing, the seam gap stuck at millimetres).
+void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<PanelGrid>& grids,
+                    const std::set<std::pair<int, int>>& locked) {
+  const bool a_locked = locked.count({s.panel_a, s.edge_a}) > 0, b_locked = locked.count({s.panel_b, s.edge_b}) > 0;
+  PanelGrid& ga = grids[static_cast<std::size_t>(s.panel_a)];
+  PanelGrid& gb = grids[static_cast<std::size_t>(s.panel_b)];
+  auto& ra = ga.edge_vertices[static_cast<std::size_t>(s.edge_a)];
+  auto& rb = gb.edge_vertices[static_cast<std::size_t>(s.edge_b)];
+  if (ra.empty() || rb.empty()) return;
+  const Panel& pa = pat.panels[static_cast<std::size_t>(s.panel_a)];
+  const Panel& pb = pat.panels[static_cast<std::size_t>(s.panel_b)];
+  struct Joined {
+    int panel, edge, vertex;
+    double t;  // the corner's fraction on `edge`
+  };
+  std::vector<Joined> joined;  // added after the loop: the runs' references stay valid until then
+  for (const double ta : {0.0, 1.0}) {
+    const double tb = s.reversed ? 1 - ta : ta;
+    auto& va = ta > 0.5 ? ra.back() : ra.front();
+    auto& vb = tb > 0.5 ? rb.back() : rb.front();
+    const bool a_on = std::abs(va.first - ta) < 1e-9, b_on = std::abs(vb.first - tb) < 1e-9;
+    const bool a_near = std::abs(va.first - ta) * edge_length(pa, s.edge_a) < h && !on_several_edges(ga, va.second);
+    const bool b_near = std::abs(vb.first - tb) * edge_length(pb, s.edge_b) < h && !on_several_edges(gb, vb.second);
+    if (a_on && !b_on && b_near && !b_locked && !occupied(gb, point_on_edge(pb, s.edge_b, tb))) {
+      vb.first = tb;
+      joined.push_back({s.panel_b, edge_at_corner(pb, s.edge_b, tb), vb.second, 1 - tb});
+    }
+    if (b_on && !a_on && a_near && !a_locked && !occupied(ga, point_on_edge(pa, s.edge_a, ta))) {
+      va.first = ta;
+      joined.push_back({s.panel_a, edge_at_corner(pa, s.edge_a, ta), va.second, 1 - ta});
+    }
+  }
+  for (const Joined& j : joined) {
+    if (j.edge < 0 || locked.count({j.panel, j.edge}) > 0) continue;
+    auto& run = grids[static_cast<std::size_t>(j.panel)].edge_vertices[static_cast<std::size_t>(j.edge)];
+    if (std::any_of(run.begin(), run.end(), [&](const auto& tv) { return tv.second == j.vertex; })) continue;
+    run.insert(j.t > 0.5 ? run.end() : run.begin(), {j.t, j.vertex});
+  }
+}
+
+// Moves the vertices of an edge run to the pattern points of their arc fractions.
+void place_run(const Panel& p, int edge, PanelGrid& g) {
+  for (const auto& [t, v] : g.edge_vertices[static_cast<std::size_t>(edge)])
+    g.uv[static_cast<std::size_t>(v)] = point_on_edge(p, edge, t);
+}
+
+}  // namespace
+
+namespace garment_detail {
+
+// Sewn edges get their boundary vertices at matching arc fractions, so every seam pair joins the
+// same pattern point on both sides (a mismatch would leave a gap the seam can never close). The
+// first seam to touch an edge spreads the shorter run evenly and moves the other onto it; an edge
+// already placed by an earlier seam stays fixed.
+void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& grids) {
+  std::set<std::pair<int, int>> done;
+  for (const auto& s : pat.seams) {
+    auto& ra = grids[static_cast<std::size_t>(s.panel_a)].edge_vertices[static_cast<std::size_t>(s.edge_a)];
+    auto& rb = grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)];
+    const bool a_done = done.count({s.panel_a, s.edge_a}) > 0, b_done = done.count({s.panel_b, s.edge_b}) > 0;
+    if ((a_done && b_done) || &ra == &rb) continue;
+    snap_seam_ends(pat, s, h, grids, done);
+    const bool a_fixed = a_done || (!b_done && ra.size() <= rb.size());
+    auto& fixed = a_fixed ? ra : rb;
+    auto& free_run = a_fixed ? rb : ra;
+    if (!(a_fixed ? a_done : b_done)) respace_run(fixed, {});
+    respace_run(free_run, seam_anchors(fixed, free_run, s.reversed));
+    place_run(pat.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a, grids[static_cast<std::size_t>(s.panel_a)]);
+    place_run(pat.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b, grids[static_cast<std::size_t>(s.panel_b)]);
+    done.insert({s.panel_a, s.edge_a});
+    done.insert({s.panel_b, s.edge_b});
+  }
+}
+
+// Pairs two vertex runs by arc position (fraction of the edge length, so edges of different
+// length or count match): every vertex of the shorter run gets the vertex of the longer run
+// nearest in relative position (Durupinar section 2: closest vertex on the second panel); driving
+// from the shorter run never sews two neighbours of one panel onto one point.
+std::vector<std::array<int, 2>> match_runs(const std::vector<std::pair<double, int>>& a,
+                                           const std::vector<std::pair<double, int>>& b, bool reversed) {
+  std::vector<std::array<int, 2>> out;
+  if (a.empty() || b.empty()) return out;
+  auto rel = [](const std::vector<std::pair<double, int>>& r, std::size_t i) { return r[i].first; };
+  const bool a_drives = a.size() < b.size();  // 'lo' drives: the shorter run
+  const auto& lo = a_drives ? a : b;
+  const auto& sh = a_drives ? b : a;
+  for (std::size_t i = 0; i < lo.size(); ++i) {
+    double t = rel(lo, i);
+    if (reversed) t = 1 - t;
+    std::size_t best = 0;
+    for (std::size_t j = 1; j < sh.size(); ++j)
+      if (std::abs(rel(sh, j) - t) < std::abs(rel(sh, best) - t)) best = j;
+    out.push_back(a_drives ? std::array<int, 2>{lo[i].second, sh[best].second}
+                           : std::array<int, 2>{sh[best].second, lo[i].second});
+  }
+  return out;
+}
+
+// How far apart along the seam the partners of a pair sit in the pattern [cm]: the difference of
+// their arc fractions (one reversed) times the mean length of the two edges.
+double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::pair<double, int>>& ra,
+                      const std::vector<std::pair<double, int>>& rb, const std::array<int, 2>& pair) {
+  auto fraction = [](const std::vector<std::pair<double, int>>& r, int v) {
+    for (const auto& [t, u] : r)
+      if (u == v) return t;
+    return 0.0;
+  };
+  const double ta = fraction(ra, pair[0]), tb = fraction(rb, pair[1]);
+  const double la = edge_length(pat.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a);
+  const double lb = edge_length(pat.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b);
+  return std::abs(ta - (s.reversed ? 1 - tb : tb)) * 0.5 * (la + lb);
+}
+}  // namespace garment_detail
+
+}  // namespace clothbench

@@ -1,0 +1,433 @@
+// The clothbench command line: exit codes of bad input, run + JSON fields, compare, reproduce --quick,
+// --version, help and listings, the accuracy verdict, the configuration hash, the time estimate.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+#include "clothbench/bench/registry.hpp"
+#include "clothbench/bench/report.hpp"
+#include "clothbench/bench/runner.hpp"
+#include "clothbench/config.h"
+#include "clothbench/experiments/experiment.hpp"
+#include "clothbench/io/data_root.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScenes = std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/";
+
+int clothbench(const std::string& args, const std::string& output = "/dev/null") {
+  const char* bin = std::getenv("CLOTHBENCH_BIN");
+  if (!bin) return -1;
+  const int rc = std::system((std::string(bin) + " " + args + " > " + output + " 2>&1").c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// the first line of `text` that starts with `prefix`, "" when none does
+std::string line_starting(const std::string& text, const std::string& prefix) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(prefix, 0) == 0) return line;
+  return "";
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const char* bin = std::getenv("CLOTHBENCH_BIN");
+    if (!bin || !fs::exists(bin)) GTEST_SKIP() << "CLOTHBENCH_BIN not set";
+    dir_ = fs::temp_directory_path() / ("clothbench_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(Cli, BadInputExitsTwoWithAMessage) {
+  const std::string log = (dir_ / "log").string();
+  EXPECT_EQ(clothbench("run " + kScenes + "missing.toml", log), 2);
+  EXPECT_NE(read(log).find("missing.toml"), std::string::npos);
+  EXPECT_EQ(clothbench("run " + kScenes + "walking/tablecloth_sphere.toml --collider nope", log), 2);
+  EXPECT_NE(read(log).find("unknown collider 'nope'"), std::string::npos);
+  EXPECT_EQ(clothbench("run " + kScenes + "walking/tablecloth_sphere.toml --set solver.limit=fast", log), 2);
+  EXPECT_NE(read(log).find("solver.limit"), std::string::npos);
+  EXPECT_EQ(clothbench("run " + kScenes + "walking/tablecloth_sphere.toml --set bad", log), 2);
+  EXPECT_EQ(clothbench("run " + kScenes +
+                           "walking/tablecloth_sphere.toml --json /proc/nope/x.json --set body.move_s=0.01 --set "
+                           "stop.drape_max_s=0.01",
+                       log),
+            2);
+  EXPECT_EQ(clothbench("reproduce --only nope", log), 2);
+  EXPECT_EQ(clothbench("compare " + (dir_ / "a.json").string() + " " + (dir_ / "b.json").string(), log), 2);
+}
+
+TEST_F(Cli, RunWritesTheResultFields) {
+  const std::string json = (dir_ / "r.json").string(), log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("run --quiet " + kScenes +
+                           "walking/tablecloth_sphere.toml --set garment.vertices=225 "
+                           "--set body.move_s=0.05 --set stop.drape_max_s=0.1 --json " +
+                           json + " --png " + (dir_ / "r.png").string(),
+                       log),
+            0);
+  // the summary names the renderer of the picture and counts the crossings
+  EXPECT_NE(read(log).find(") drawn by "), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find(" % of structural springs); seam gap"), std::string::npos) << read(log);
+  const auto doc = nlohmann::json::parse(read(json));
+  ASSERT_EQ(doc["benchmarks"].size(), 1u);
+  const auto& row = doc["benchmarks"][0];
+  for (const char* key : {"name", "scene", "collider", "regime", "iterations", "real_time", "time_unit", "vertices", "query_points", "total_s",
+                          "cdr_ms", "cs_ms", "frames", "fps", "inside_pct", "depth_max_mm", "depth_p95_mm",
+                          "strain_max", "strain_p99", "converged", "diverged"})
+    EXPECT_TRUE(row.contains(key)) << key;
+  // one unit per row, the one that keeps real_time at 1 or more; cpu_time measured (the thread's CPU time)
+  const std::string unit = row["time_unit"];
+  EXPECT_TRUE(unit == "ms" || unit == "us" || unit == "ns") << unit;
+  EXPECT_GE(row["real_time"].get<double>(), 1.0);
+  EXPECT_GT(row["cpu_time"].get<double>(), 0.0);
+  EXPECT_EQ(row["threads"], 1);  // github-action-benchmark's googlecpp reads name, real_time, cpu_time,
+  EXPECT_TRUE(row.contains("iterations"));  // time_unit, iterations and threads
+  EXPECT_TRUE(doc["context"].contains("git_sha"));
+  EXPECT_TRUE(fs::exists(dir_ / "r.png"));
+  EXPECT_FALSE(fs::exists(json + ".tmp"));
+}
+
+// every build draws maps with the CPU rasteriser; --renderer gl without CLOTHBENCH_WITH_GL names the option
+TEST_F(Cli, MapsWithoutOpenGlUseTheCpuRendererAndNameTheMissingOption) {
+  if (!fs::exists(clothbench::kDebianHumanBody)) GTEST_SKIP() << clothbench::kDebianHumanBody << " missing";
+  const std::string log = (dir_ / "log").string();
+  const std::string maps = "maps " + std::string(clothbench::kDebianHumanBody) + " --size 32 --png " + dir_.string();
+  EXPECT_EQ(clothbench(maps + " --renderer cpu", log), 0) << read(log);
+  EXPECT_TRUE(fs::exists(dir_ / "human_rest_depth.png"));
+#ifdef CLOTHBENCH_WITH_GL
+  GTEST_SKIP() << "built with CLOTHBENCH_WITH_GL";
+#else
+  EXPECT_EQ(clothbench(maps, log), 0) << read(log);  // the default renderer is cpu here
+  EXPECT_NE(read(log).find("cpu maps"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench(maps + " --renderer gl", log), 2);
+  EXPECT_NE(read(log).find("-DCLOTHBENCH_WITH_GL=ON"), std::string::npos) << read(log);
+#endif
+}
+
+// a result file of `reps` repetitions of row NAME around time t (ms; +-1 % apart, as repetitions are)
+void write_runs(const std::string& path, const std::string& name, double t, int reps, const std::string& hash = "") {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < reps; ++i) {
+    nlohmann::json row{{"name", name}, {"run_type", "iteration"}, {"real_time", t * (1 + 0.01 * (i - reps / 2))},
+                       {"time_unit", "ms"}};
+    if (!hash.empty()) row["config_hash"] = hash;
+    rows.push_back(row);
+  }
+  std::ofstream(path) << nlohmann::json{{"context", {}}, {"benchmarks", rows}}.dump();
+}
+
+TEST_F(Cli, CompareFlagsARegressionOnlyWithEnoughRepetitions) {
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  write_runs(file("old.json"), "a/b", 1.0, 5);
+  write_runs(file("same.json"), "a/b", 1.05, 5);
+  write_runs(file("slow.json"), "a/b", 1.5, 5);
+  write_runs(file("once.json"), "a/b", 1.5, 1);
+  const std::string old = file("old.json"), log = file("log");
+  EXPECT_EQ(clothbench("compare " + old + " " + file("same.json")), 0);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("slow.json"), log), 1);
+  EXPECT_NE(read(log).find("REGRESSION"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("slow.json") + " --threshold 60"), 0);
+  // one run against five: no verdict, and nothing judged is exit 2, not a pass
+  EXPECT_EQ(clothbench("compare " + old + " " + file("once.json"), log), 2);
+  EXPECT_NE(read(log).find("no verdict: 5 vs 1 repetitions (need >= 5 on both sides)"), std::string::npos) << read(log);
+}
+
+TEST_F(Cli, CompareListsRowsOnOneSideOnlyAndReadsEachRowsTimeUnit) {
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  write_runs(file("old.json"), "a/b", 1.0, 5);
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 5; ++i)  // the same times in us, and a row the old file lacks
+    rows.push_back({{"name", "a/b"}, {"real_time", 1000.0 * (1 + 0.01 * (i - 2))}, {"time_unit", "us"}}),
+        rows.push_back({{"name", "a/new"}, {"real_time", 1.0}, {"time_unit", "ms"}});
+  std::ofstream(file("new.json")) << nlohmann::json{{"context", {}}, {"benchmarks", rows}}.dump();
+  const std::string log = file("log");
+  EXPECT_EQ(clothbench("compare " + file("old.json") + " " + file("new.json"), log), 0) << read(log);
+  EXPECT_NE(read(log).find("only in new"), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find("1.000 ["), std::string::npos) << read(log);  // 1 ms = 1000 us
+  EXPECT_EQ(clothbench("compare " + file("new.json") + " " + file("old.json"), log), 0) << read(log);
+  EXPECT_NE(read(log).find("only in old"), std::string::npos) << read(log);
+}
+
+TEST_F(Cli, VersionPrintsTheVersionAndTheGitSha) {
+  const std::string log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("--version", log), 0);
+  const std::string sha = clothbench::git_sha();
+  EXPECT_EQ(read(log).rfind("clothbench " CLOTHBENCH_VERSION " (git " + sha.substr(0, sha.find('-')), 0), 0u)
+      << read(log);
+}
+
+TEST_F(Cli, ReproduceHelpListsEveryExperimentOfTheRegistry) {
+  const std::string log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("reproduce --help", log), 0);
+  const std::string help = read(log);
+  ASSERT_FALSE(clothbench::experiments().empty());
+  for (const auto& e : clothbench::experiments()) {
+    const std::string line = line_starting(help, "  " + e.id + " ");
+    EXPECT_FALSE(line.empty()) << e.id << " missing in\n" << help;
+    EXPECT_EQ(line.substr(line.find_first_not_of(' ', e.id.size() + 2)), e.title) << line;
+  }
+}
+
+TEST_F(Cli, CollidersPrintsAnAlignedTableOrJson) {
+  const std::string log = (dir_ / "log").string();
+  const auto colliders = clothbench::all_colliders();
+  ASSERT_EQ(clothbench("colliders", log), 0);
+  std::istringstream table(read(log));
+  std::string header;
+  std::getline(table, header);
+  EXPECT_EQ(header.rfind("name ", 0), 0u) << header;
+  const std::size_t built = header.find("built"), description = header.find("description");
+  ASSERT_NE(description, std::string::npos) << header;
+  for (const auto& c : colliders) {
+    std::string line;
+    ASSERT_TRUE(std::getline(table, line)) << c.name;
+    EXPECT_EQ(line.rfind(c.name + " ", 0), 0u) << line;
+    EXPECT_EQ(line.find_first_not_of(' ', c.name.size()), built) << line;
+    EXPECT_EQ(line.find(c.built ? "yes" : "no (-D" + c.option + "=ON)"), built) << line;
+    EXPECT_EQ(line.find(c.description), description) << line;
+  }
+  ASSERT_EQ(clothbench("colliders --json", log), 0);
+  const auto doc = nlohmann::json::parse(read(log));
+  ASSERT_EQ(doc.size(), colliders.size());
+  for (std::size_t i = 0; i < colliders.size(); ++i) {
+    EXPECT_EQ(doc[i]["name"], colliders[i].name);
+    EXPECT_EQ(doc[i]["built"], colliders[i].built);
+    EXPECT_EQ(doc[i]["option"], colliders[i].option);
+    EXPECT_EQ(doc[i]["description"], colliders[i].description);
+  }
+}
+
+TEST_F(Cli, UnknownSceneKeySuggestsTheNearestKnownKey) {
+  const std::string log = (dir_ / "log").string();
+  EXPECT_EQ(clothbench("run " + kScenes + "walking/tablecloth_sphere.toml --set garment.vertice=225", log), 2);
+  EXPECT_NE(read(log).find("garment.vertice (from --set): unknown key `vertice` (did you mean `vertices`?)"),
+            std::string::npos)
+      << read(log);
+  const std::string scene = (dir_ / "typo.toml").string();
+  std::ofstream(scene) << "[solver]\nthreshhold = 0.1\n";
+  EXPECT_EQ(clothbench("run " + scene, log), 2);
+  EXPECT_NE(read(log).find("typo.toml:2: solver.threshhold: unknown key `threshhold` (did you mean `threshold`?)"),
+            std::string::npos)
+      << read(log);
+}
+
+// a small run of the tablecloth on the analytic sphere: well under a second
+const std::string kSmallRun =
+    "walking/tablecloth_sphere.toml --set garment.vertices=225 --set body.move_s=0.05 "
+    "--set stop.drape_max_s=0.1";
+
+TEST_F(Cli, RunRecordsTheOverridesAndTheConfigHashAndCompareFlagsADifferentConfig) {
+  const std::string a = (dir_ / "a.json").string(), b = (dir_ / "b.json").string(), log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("run --quiet " + kScenes + kSmallRun + " --json " + a, log), 0) << read(log);
+  const auto doc = nlohmann::json::parse(read(a));
+  const auto& context = doc["context"];
+  EXPECT_EQ(context["scene"], kScenes + "walking/tablecloth_sphere.toml");
+  EXPECT_EQ(context["overrides"], nlohmann::json({"garment.vertices=225", "body.move_s=0.05", "stop.drape_max_s=0.1"}));
+  const std::string hash = context["config_hash"];
+  EXPECT_EQ(hash.size(), 16u);
+  EXPECT_EQ(doc["benchmarks"][0]["config_hash"], hash);
+  // the summary names them too
+  EXPECT_NE(read(log).find("--set garment.vertices=225 body.move_s=0.05 stop.drape_max_s=0.1; config " + hash),
+            std::string::npos)
+      << read(log);
+  // the same row with another setting: another hash, and compare does not judge it
+  ASSERT_EQ(clothbench("run --quiet " + kScenes + kSmallRun + " --set material.damping=0.003 --json " + b, log), 0);
+  const auto other = nlohmann::json::parse(read(b));
+  EXPECT_NE(other["context"]["config_hash"], hash);
+  ASSERT_EQ(other["benchmarks"][0]["name"], doc["benchmarks"][0]["name"]);
+  EXPECT_EQ(clothbench("compare " + a + " " + b + " --threshold 0", log), 2) << read(log);  // nothing judged
+  EXPECT_NE(read(log).find("CONFIG DIFFERS (not judged)"), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find("warning: 1 row(s) ran with a different configuration"), std::string::npos) << read(log);
+  clothbench("compare " + a + " " + a, log);
+  EXPECT_EQ(read(log).find("CONFIG DIFFERS"), std::string::npos) << read(log);
+}
+
+TEST_F(Cli, CompareDoesNotJudgeRowsOfDifferentConfigurations) {
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  write_runs(file("old.json"), "a/b", 1.0, 5, "0000000000000001");
+  write_runs(file("slow.json"), "a/b", 1.5, 5, "0000000000000001");
+  write_runs(file("other.json"), "a/b", 1.5, 5, "0000000000000002");
+  const std::string old = file("old.json"), log = file("log");
+  EXPECT_EQ(clothbench("compare " + old + " " + file("slow.json")), 1);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("other.json"), log), 2);  // the only row is not judged
+  EXPECT_NE(read(log).find("CONFIG DIFFERS"), std::string::npos) << read(log);
+}
+
+// --repetitions: a row per run (run_name, repetition_index) and Google Benchmark's aggregates, which compare
+// reads back as samples of one benchmark
+TEST_F(Cli, RunWithRepetitionsWritesEveryRunAndTheAggregates) {
+  const std::string a = (dir_ / "a.json").string(), log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("run --quiet --repetitions 5 " + kScenes + kSmallRun + " --json " + a, log), 0) << read(log);
+  EXPECT_NE(read(log).find("5 repetitions: per iteration median"), std::string::npos) << read(log);
+  const auto rows = nlohmann::json::parse(read(a))["benchmarks"];
+  ASSERT_EQ(rows.size(), 9u);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(rows[i]["run_type"], "iteration");
+    EXPECT_EQ(rows[i]["repetition_index"], i);
+    EXPECT_EQ(rows[i]["run_name"], rows[0]["name"]);
+  }
+  const char* aggregates[] = {"mean", "median", "stddev", "cv"};
+  for (int i = 0; i < 4; ++i) {
+    const auto& g = rows[5 + i];
+    EXPECT_EQ(g["run_type"], "aggregate");
+    EXPECT_EQ(g["aggregate_name"], aggregates[i]);
+    EXPECT_EQ(g["name"], rows[0]["name"].get<std::string>() + "_" + aggregates[i]);
+    EXPECT_EQ(g["aggregate_unit"], i == 3 ? "percentage" : "time");
+  }
+  std::vector<double> t;
+  for (int i = 0; i < 5; ++i) t.push_back(rows[i]["real_time"].get<double>());
+  std::sort(t.begin(), t.end());
+  EXPECT_DOUBLE_EQ(rows[6]["real_time"].get<double>(), t[2]);  // the median of the five
+  // the same file on both sides: five samples each, judged, no regression
+  EXPECT_EQ(clothbench("compare " + a + " " + a, log), 0) << read(log);
+  EXPECT_NE(read(log).find("among 1 judged row(s)"), std::string::npos) << read(log);
+}
+
+// a sweep in shards: every point exactly once over the shards, a failing point reported with its error and
+// exit status and the others kept, a re-run skipping what is done, merge joining the shards' folder
+TEST_F(Cli, SweepShardsKeepTheGoodPointsAndReportTheFailedOne) {
+  if (!fs::exists(clothbench::kDebianHumanBody)) GTEST_SKIP() << clothbench::kDebianHumanBody << " missing";
+  const std::string out = (dir_ / "sweep").string(), log = (dir_ / "log").string();
+  const std::string grid = "sweep " + kScenes + "dressing/skirt.toml --collider is-cpu --set garment.vertices=100,-5,120 "
+                           "--set stop.max_iterations=5 --out " + out;
+  EXPECT_EQ(clothbench(grid + " --shard 0/2 --jobs 1", log), 0) << read(log);  // points 0 and 2: fine
+  EXPECT_EQ(clothbench(grid + " --shard 1/2 --jobs 1", log), 5) << read(log);  // point 1: vertices = -5
+  EXPECT_TRUE(fs::exists(dir_ / "sweep/points/0.json"));
+  EXPECT_TRUE(fs::exists(dir_ / "sweep/points/1.error.json"));
+  EXPECT_TRUE(fs::exists(dir_ / "sweep/points/2.json"));
+  const std::string merged = (dir_ / "merged.json").string();
+  EXPECT_EQ(clothbench("merge " + out + " --out " + merged, log), 5) << read(log);
+  EXPECT_NE(read(log).find("FAILED is-cpu/garment.vertices=-5/stop.max_iterations=5 (point 1"), std::string::npos)
+      << read(log);
+  EXPECT_NE(read(log).find("exit status 2)"), std::string::npos) << read(log);
+  const auto doc = nlohmann::json::parse(read(merged));
+  EXPECT_EQ(doc["benchmarks"].size(), 2u);
+  ASSERT_EQ(doc["failed"].size(), 1u);
+  EXPECT_EQ(doc["failed"][0]["index"], 1);
+  // done points are not run again; a folder of another grid is refused
+  EXPECT_EQ(clothbench(grid + " --shard 0/2", log), 0) << read(log);
+  EXPECT_NE(read(log).find("shard 0/2: 0 to run"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench(grid + " --shard 1/2", log), 5) << read(log);  // a failed point is tried again
+  EXPECT_NE(read(log).find("shard 1/2: 1 to run"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench("sweep " + kScenes + "dressing/skirt.toml --out " + out, log), 2) << read(log);
+  EXPECT_NE(read(log).find("holds another sweep"), std::string::npos) << read(log);
+}
+
+// the verdict against the accuracy limits: in the summary (never "converged yes" alone), in the
+// JSON, and as exit code 4 under --strict
+TEST_F(Cli, RunPrintsTheAccuracyVerdictAndStrictExitsFourWhenTheLimitsAreMissed) {
+  const std::string json = (dir_ / "r.json").string(), log = (dir_ / "log").string();
+  const int rc = clothbench("run --quiet --strict " + kScenes + kSmallRun + " --json " + json, log);
+  const auto row = nlohmann::json::parse(read(json))["benchmarks"][0];
+  ASSERT_TRUE(row.contains("meets_limits") && row.contains("limit_misses")) << row.dump();
+  const bool meets = row["meets_limits"] == 1;
+  EXPECT_EQ(meets, row["limit_misses"].empty());
+  EXPECT_EQ(rc, meets ? 0 : 4) << read(log);
+  std::string misses;
+  for (const auto& m : row["limit_misses"]) misses += (misses.empty() ? "" : ", ") + m.get<std::string>();
+  const std::string verdict = line_starting(read(log), "  converged ");
+  EXPECT_NE(verdict.find(meets ? "; accuracy: meets the limits (inside <= 0.5 %, depth <= 5 mm, crossings <= 1 %"
+                               : "; accuracy: MISSES the limits: " + misses),
+            std::string::npos)
+      << read(log);
+  // without --strict the same run exits 0
+  EXPECT_EQ(clothbench("run --quiet " + kScenes + kSmallRun, log), 0);
+}
+
+TEST(Limits, MissesNameTheValueAndTheLimit) {
+  clothbench::RunResult r;
+  EXPECT_TRUE(clothbench::limit_misses(r).empty());
+  r.accuracy.inside_pct = 6.1;
+  r.accuracy.crossings_pct = 1.94;
+  r.accuracy.depth_max_mm = 5;  // at the limit: meets it
+  EXPECT_EQ(clothbench::limit_misses(r), (std::vector<std::string>{"inside 6.1 % > 0.5 %", "crossings 1.94 % > 1 %"}));
+  r = {};
+  r.strain_threshold = 0.1;
+  r.strain_max = 0.2;
+  r.seam_gap_max_mm = NAN;
+  EXPECT_EQ(clothbench::limit_misses(r), (std::vector<std::string>{"seam gap - mm > 2 mm", "strain 20 % > 11 %"}));
+  EXPECT_EQ(clothbench::limit_misses(r, false), (std::vector<std::string>{"seam gap - mm > 2 mm"}));
+  EXPECT_EQ(clothbench::limits_text(r),
+            "inside <= 0.5 %, depth <= 5 mm, crossings <= 1 %, seam gap <= 2 mm, strain <= 11 %");
+  r.strain_threshold = 0;  // no super-elasticity limit: no strain limit
+  EXPECT_EQ(clothbench::limits_text(r), "inside <= 0.5 %, depth <= 5 mm, crossings <= 1 %, seam gap <= 2 mm");
+  r.divergence = clothbench::Divergence{};
+  EXPECT_EQ(clothbench::limit_misses(r), std::vector<std::string>{"diverged"});
+}
+
+// "estimate: at most about 2 min 25 s (brute, 1234 queries/iteration, up to 7000 iterations; ..."
+const std::regex kEstimate(R"(estimate: at most about (\d+ h \d\d min|(\d+ min )?\d+ s) )"
+                           R"(\(brute, \d+ queries/iteration, up to \d+ iterations;)");
+
+TEST_F(Cli, RunEstimatePrintsTheEstimateAndSimulatesNothing) {
+  const std::string log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("run --quiet --estimate --collider brute " + kScenes + kSmallRun, log), 0) << read(log);
+  EXPECT_TRUE(std::regex_search(read(log), kEstimate)) << read(log);
+  EXPECT_EQ(read(log).find("accuracy"), std::string::npos) << read(log);
+}
+
+// progress lines (after the first second, once a second) carry an ETA
+TEST_F(Cli, ProgressLinesCarryAnEta) {
+  const std::string log = (dir_ / "log").string();
+  // brute force on the tablecloth: about 30 ms per iteration here, 120 iterations (the drape never settles)
+  ASSERT_EQ(clothbench("run --collider brute " + kScenes +
+                           "walking/tablecloth_sphere.toml --set garment.vertices=400 --set body.move_s=0 "
+                           "--set stop.drape_max_s=100 --set stop.settle_speed=0 --set stop.max_iterations=120",
+                       log),
+            0);
+  const std::string progress = line_starting(read(log), "  [tablecloth-sphere/brute ");
+  ASSERT_FALSE(progress.empty()) << read(log);
+  EXPECT_TRUE(std::regex_search(
+      progress, std::regex(R"(^  \[tablecloth-sphere/brute \d+ s, ETA <= (\d+ h \d\d min|(\d+ min )?\d+ s|\?)\] )")))
+      << progress;
+}
+
+TEST(Estimate, DurationsForPeople) {
+  EXPECT_EQ(clothbench::format_duration(0.4), "0 s");
+  EXPECT_EQ(clothbench::format_duration(12.4), "12 s");
+  EXPECT_EQ(clothbench::format_duration(145), "2 min 25 s");
+  EXPECT_EQ(clothbench::format_duration(3725), "1 h 02 min");
+  EXPECT_EQ(clothbench::format_duration(NAN), "?");
+}
+
+// a run prints its estimate up front when it exceeds estimate_above_s; the results do not depend
+// on it (it steps a copy of the simulator and queries the collider), with any collider
+TEST(Estimate, PrintedUpFrontAndTheResultsDoNotDependOnIt) {
+  for (const std::string& collider : clothbench::available_colliders()) {
+    const clothbench::Scene scene = clothbench::load_scene(
+        kScenes + "walking/tablecloth_sphere.toml",
+        {"garment.vertices=225", "body.move_s=0.05", "stop.drape_max_s=0.1", "collider.name=" + collider});
+    clothbench::RunOptions quiet, loud;
+    quiet.progress = false;
+    loud.estimate_above_s = 0;
+    const clothbench::RunResult a = clothbench::run_scene(scene, quiet);
+    testing::internal::CaptureStderr();
+    const clothbench::RunResult b = clothbench::run_scene(scene, loud);
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("[tablecloth-sphere/" + collider + "] estimate: at most about "), std::string::npos) << err;
+    EXPECT_GT(b.estimate_s, 0) << collider;
+    EXPECT_EQ(a.iteration_budget, b.iteration_budget) << collider;
+    ASSERT_EQ(a.iterations(), b.iterations()) << collider;
+    ASSERT_EQ(a.mesh.positions.size(), b.mesh.positions.size());
+    EXPECT_TRUE(a.mesh.positions == b.mesh.positions) << collider << ": bit-identical with and without the estimate";
+  }
+}
+
+}  // namespace

@@ -1,0 +1,56 @@
+// ExperimentContext: what reproduce --jobs N hands back from its worker processes equals what a run in the
+// process measures, but for timings, and carries the cloth's end state (the drape error needs it).
+#include "clothbench/experiments/experiment.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "clothbench/bench/run_result_json.hpp"
+
+namespace clothbench {
+namespace {
+
+// every field but the timings (as tests/cluster/same_except_timings.py: keys ending in _ms, estimate_s) and the
+// end state (compared on its own)
+void drop_timings(nlohmann::json& j) {
+  for (auto it = j.begin(); it != j.end();) {
+    const std::string k = j.is_object() ? it.key() : "";
+    const bool timing = k == "estimate_s" || (k.size() > 3 && k.compare(k.size() - 3, 3, "_ms") == 0);
+    if (timing) {
+      it = j.erase(it);
+      continue;
+    }
+    if (it->is_object()) drop_timings(*it);
+    ++it;
+  }
+}
+nlohmann::json without_timings(const RunResult& r) {
+  nlohmann::json j = to_json(r);
+  drop_timings(j);
+  j.erase("sew_iteration_ms");
+  return j;
+}
+
+TEST(ExperimentContext, PrefetchedRunsEqualRunsInTheProcessButForTimings) {
+  const std::string out = (std::filesystem::temp_directory_path() / "clothbench-prefetch-test").string();
+  const std::vector<ExperimentContext::Request> grid{
+      {"walking/tablecloth_sphere.toml", "sphere", {"garment.vertices=100", "stop.drape_max_s=0.05"}},
+      {"walking/tablecloth_sphere.toml", "brute", {"garment.vertices=64", "stop.drape_max_s=0.05"}}};
+  ExperimentContext alone(out + "/1", false, 1, 1), workers(out + "/2", false, 1, 2);
+  workers.prefetch(grid);
+  for (const auto& q : grid) {
+    const RunResult& a = alone.run(q.scene, q.collider, q.sets);
+    const RunResult& b = workers.run(q.scene, q.collider, q.sets);
+    ASSERT_GT(a.mesh.positions.cols(), 0);
+    EXPECT_EQ(b.mesh.positions, a.mesh.positions) << q.collider;
+    EXPECT_EQ(b.mesh.quads, a.mesh.quads) << q.collider;
+    EXPECT_EQ(without_timings(b), without_timings(a)) << q.collider;
+  }
+  std::filesystem::remove_all(out);
+}
+
+}  // namespace
+}  // namespace clothbench
