@@ -39,11 +39,18 @@ Scene scene_for(const std::string& scene, const std::string& collider, const std
 
 }  // namespace
 
+bool ExperimentContext::needs_opengl(const std::string& collider) {
+  // a forked worker inherits this process's OSMesa state but not llvmpipe's rendering threads: once this process
+  // has drawn (a picture, an is-gl map), OpenGL in the child waits forever for threads that are not there
+  return collider == "is-gl";
+}
+
 void ExperimentContext::prefetch(const std::vector<Request>& requests) {
   if (jobs_ <= 1) return;
   std::vector<Request> todo;
   for (const Request& q : requests)
-    if (!cache_.count(cache_key(q.scene, q.collider, q.sets))) todo.push_back(q);
+    if (!cache_.count(cache_key(q.scene, q.collider, q.sets)) && !needs_opengl(q.collider)) todo.push_back(q);
+  if (todo.empty()) return;
   const std::string dir = folder(".prefetch");
   const auto file = [&](std::size_t k) { return dir + "/" + std::to_string(k) + ".json"; };
   std::cerr << "  prefetching " << todo.size() << " runs in " << jobs_ << " worker processes\n";

@@ -136,52 +136,28 @@ void integrators(ExperimentContext& ctx) {
         ctx.add_run(r, "integrators/" + std::string(g.product) + "/" + label);
         const long its = r.sew.iterations + r.drape.iterations;
         const double wall_s = r.setup_ms / 1e3 + r.total_s();
+        // the row's lead: what ran; then its outcome (a diverged run has no accuracy)
+        std::vector<std::string> cells{
+            g.product, s.integrator, regime_label(s), collider, std::to_string(r.vertices), num(1e3 * r.dt_s, 3)};
+        const auto add = [&](std::initializer_list<std::string> more) { cells.insert(cells.end(), more); };
         if (r.divergence) {
-          t.row({g.product,
-                 s.integrator,
-                 regime_label(s),
-                 collider,
-                 std::to_string(r.vertices),
-                 num(1e3 * r.dt_s, 3),
-                 "diverged at " + std::to_string(r.divergence->iteration),
-                 std::to_string(g.paper_iterations),
-                 "-",
-                 "-",
-                 "-",
-                 num(wall_s, 3),
-                 num(r.ms_per_iteration(), 3),
-                 "-",
-                 "-",
-                 "-",
-                 "-",
-                 "-",
-                 "-",
-                 "-",
-                 "no: diverged"});
+          add({"diverged at " + std::to_string(r.divergence->iteration), std::to_string(g.paper_iterations), "-", "-",
+               "-", num(wall_s, 3), num(r.ms_per_iteration(), 3)});
+          cells.resize(cells.size() + 7, "-");  // inside, depth, crossings, seam gap, strain, over, where
+          add({"no: diverged"});
+          t.row(cells);
           continue;
         }
-        t.row({g.product,
-               s.integrator,
-               regime_label(s),
-               collider,
-               std::to_string(r.vertices),
-               num(1e3 * r.dt_s, 3),
-               std::to_string(r.sew.iterations) + " + " + std::to_string(r.drape.iterations),
-               std::to_string(g.paper_iterations),
-               num(double(r.sew.iterations) / g.paper_iterations, 1) + "; " + num(double(its) / g.paper_iterations, 1),
-               r.sew.reached ? "yes" : "no",
-               r.drape.reached ? "yes" : "no",
-               num(wall_s, 3),
-               num(r.ms_per_iteration(), 3) + " (" + num(r.cdr_ms_per_iteration(), 3) + " + " +
-                   num(r.cs_ms_per_iteration(), 3) + "; " + num(r.limit_ms_per_iteration(), 3) + ")",
-               num(r.accuracy.inside_pct, 2),
-               num(r.accuracy.depth_max_mm, 1),
-               num(r.accuracy.crossings_pct, 2),
-               num(r.seam_gap_max_mm, 1),
-               num(100 * r.strain_max, 1) + " / " + num(100 * r.strain_p99, 1),
-               num(100 * r.strain_over, 2),
-               r.strain_max_where,
-               limits_cell(r)});
+        add({std::to_string(r.sew.iterations) + " + " + std::to_string(r.drape.iterations),
+             std::to_string(g.paper_iterations),
+             num(double(r.sew.iterations) / g.paper_iterations, 1) + "; " + num(double(its) / g.paper_iterations, 1),
+             r.sew.reached ? "yes" : "no", r.drape.reached ? "yes" : "no", num(wall_s, 3),
+             num(r.ms_per_iteration(), 3) + " (" + num(r.cdr_ms_per_iteration(), 3) + " + " +
+                 num(r.cs_ms_per_iteration(), 3) + "; " + num(r.limit_ms_per_iteration(), 3) + ")",
+             num(r.accuracy.inside_pct, 2), num(r.accuracy.depth_max_mm, 1), num(r.accuracy.crossings_pct, 2),
+             num(r.seam_gap_max_mm, 1), num(100 * r.strain_max, 1) + " / " + num(100 * r.strain_p99, 1),
+             num(100 * r.strain_over, 2), r.strain_max_where, limits_cell(r)});
+        t.row(cells);
         x.push_back(wall_s);
         y.push_back(100 * r.strain_p99);
       }

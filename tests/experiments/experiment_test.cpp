@@ -4,11 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/run_result_json.hpp"
+#include "clothbench/sim/body_frame.hpp"
 
 namespace clothbench {
 namespace {
@@ -49,6 +52,24 @@ TEST(ExperimentContext, PrefetchedRunsEqualRunsInTheProcessButForTimings) {
     EXPECT_EQ(b.mesh.quads, a.mesh.quads) << q.collider;
     EXPECT_EQ(without_timings(b), without_timings(a)) << q.collider;
   }
+  std::filesystem::remove_all(out);
+}
+
+// reproduce draws pictures with OpenGL before its grids run; a forked worker inherits OSMesa but not llvmpipe's
+// threads, and is-gl in it waited forever (a full reproduce --jobs 2 hung): is-gl requests stay in this process
+TEST(ExperimentContext, PrefetchLeavesOpenGlToThisProcessOnceItHasDrawn) {
+  const auto built = available_colliders();
+  if (std::find(built.begin(), built.end(), "is-gl") == built.end()) GTEST_SKIP() << "is-gl not built";
+  auto gl = make_collider("is-gl");
+  gl->set_body(make_sphere_body(Vec3::Zero(), 0.2f));  // this process has drawn
+  EXPECT_TRUE(ExperimentContext::needs_opengl("is-gl"));
+  EXPECT_FALSE(ExperimentContext::needs_opengl("is-cpu"));
+  const std::string out = (std::filesystem::temp_directory_path() / "clothbench-prefetch-gl-test").string();
+  ExperimentContext workers(out, false, 1, 2);
+  const ExperimentContext::Request q{
+      "walking/tablecloth_sphere.toml", "is-gl", {"garment.vertices=64", "stop.drape_max_s=0.02"}};
+  workers.prefetch({q});  // hung here when it forked is-gl
+  EXPECT_GT(workers.run(q.scene, q.collider, q.sets).mesh.positions.cols(), 0);
   std::filesystem::remove_all(out);
 }
 

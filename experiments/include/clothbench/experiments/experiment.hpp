@@ -54,6 +54,9 @@ class ExperimentContext {
   /// state (mesh positions and quads: the drape error) but not the body's (final_body is empty). A request that fails
   /// in its worker stays uncached, and run() then reports its error as usual.
   void prefetch(const std::vector<Request>& requests);
+  /// Whether a collider draws with OpenGL: prefetch leaves its requests to run() in this process (a forked
+  /// child cannot use the OSMesa state it inherits once this process has drawn).
+  static bool needs_opengl(const std::string& collider);
 
   /// Runs scenes/SCENE (relative to the source tree's scenes/) with a collider and overrides;
   /// identical requests in one `reproduce` share one run. With repetitions > 1 the run is
