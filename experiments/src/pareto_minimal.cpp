@@ -312,8 +312,9 @@ void minimal(ExperimentContext& ctx) {
           " % of the structural springs crossing "
           "the body (the holes of dressing section 7). The papers chose their counts by eye. The dressing scenes "
           "(scenes/dressing, is-cpu without face queries) default to a size at or above the is-cpu row. The "
-          "row \"the papers' test\" runs image space as the papers did (z comparison on 8-bit maps, face queries): the "
-          "configuration of their Table 2 counts. Ladders climb one rung at a time, all at once, each stopping at its "
+          "rows \"the papers' test\" run image space as the papers did (z comparison on 8-bit maps), with and without "
+          "face queries; with them, the configuration of their Table 2 counts. Ladders climb one rung at a time, all "
+          "at once, each stopping at its "
           "first size meeting the limits. " +
           ctx.grid_note(runs) + "\n\n" + t.str());
 }
