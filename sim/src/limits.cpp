@@ -68,7 +68,7 @@ void Simulator::limit_velocities(bool contacts_stop_inward) {
       l != Limit::kDirectionalLiteral)
     return;
   const Real max_len_factor = 1 + params_.threshold;
-  const Vec3 v_grav = params_.gravity * dt_;  // walking Eq. 6: v_grav = g dt
+  const Vec3 v_grav = phase_gravity() * dt_;  // walking Eq. 6: v_grav = g dt (zero while sewing: no gravity acts)
   // held points cannot catch up: attached ones and those the body holds (in contact)
   held_.assign(static_cast<std::size_t>(x_.cols()), 0);
   for (Eigen::Index i = 0; i < x_.cols(); ++i)

@@ -211,6 +211,34 @@ TEST(Simulator, LimitsShortenAnOverStretchedSpringAtLimitSpeed) {
   }
 }
 
+TEST(Simulator, TheDirectionalLimitSeesGravityOnlyWhenItActs) {
+  // walking Eq. 6's v_grav = g dt is the velocity gravity adds in the step: none while sewing (gravity off),
+  // where, against a static body, the directional rule has no direction and averages as Eq. 5 does
+  // (taking the scene's g there made the papers' dress pull one panel across the body and never sew)
+  const auto after_one_step = [](Limit limit, Phase phase) {
+    Material mat;
+    mat.damping = 0;
+    mat.k_structural = 1e-3f;  // the limit, not the spring, decides
+    SolverParams p;
+    p.limit = limit;
+    p.dt = 0.01f;
+    ClothMesh c = test::two_particles(0.1f, 0);
+    c.positions.col(1) = Vec3(0, -0.1f, 0);  // b hangs below a
+    Simulator sim(c, mat, p);
+    sim.set_phase(phase);
+    sim.velocities().col(0) = Vec3(0, 0.5f, 0);  // a rises, b falls: the spring would end 25 % long
+    sim.velocities().col(1) = Vec3(0, -1.0f, 0);
+    EXPECT_TRUE(sim.step());
+    return Points3(sim.velocities());
+  };
+  const Points3 averaged = after_one_step(Limit::kVelocity, Phase::kSew);
+  EXPECT_LT((after_one_step(Limit::kDirectional, Phase::kSew) - averaged).norm(), 1e-5f);
+  // with gravity on the rear (upper) point catches up with the front one instead
+  const Points3 falling = after_one_step(Limit::kDirectional, Phase::kDrape);
+  EXPECT_GT((falling - after_one_step(Limit::kVelocity, Phase::kDrape)).norm(), 0.1f);
+  EXPECT_LT(falling(1, 0), 0.f);  // the upper point now moves down with the lower one
+}
+
 TEST(Simulator, EulerStableBelowEq4BoundAndUnstableWellAbove) {
   EXPECT_TRUE(runs_stably(0.95f, 3000));
   EXPECT_FALSE(runs_stably(3.0f, 3000));

@@ -206,6 +206,7 @@ class Simulator {
  private:
   void detect();
   ForceModel force_model() const;
+  Vec3 phase_gravity() const;  ///< the gravity acting in the current phase
   void limit_velocities(bool contacts_stop_inward = false);
   void stop_inward_contacts();
   void order_springs_from_held();
