@@ -51,7 +51,8 @@ void dressing_t1(ExperimentContext& ctx) {
   std::ostringstream body;
   body << "Shirt (sleeveless, 2 panels) and dress sewn (seam forces, no gravity) and draped on the static body "
           "(scenes/dressing/*.toml), vertex-body queries only, as in the paper's Table 1, with at most 0.6 s of "
-          "sewing and 0.4 s of draping (simulated; the reproduce budget), in two solver regimes: `stable` (ours: "
+          "sewing and 0.4 s of draping in the stable regime (simulated; the reproduce budget), 1 s and 2 s in the "
+          "papers', in two solver regimes: `stable` (ours: "
           "dt from Eq. 4 and Gershgorin at the actual point masses, stiff springs) and `papers` (the papers' clock: "
           "equal point masses, dt 5 ms, soft automatic springs, the stretch held by the directional velocity limit; "
           "scenes/README.md). The paper does not state its dt; every iteration count is given with ours. "
