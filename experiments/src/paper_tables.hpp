@@ -111,6 +111,12 @@ inline std::string regime_picture(ExperimentContext& ctx, const RunResult& r, co
                  product + (regime == "stable" ? "" : " (" + regime + ")"));
 }
 
+// the sewing phase's iterations and their ratio to the paper's count ("to sew", dressing section 7)
+inline std::string sew_cell(const RunResult& r, int paper_iterations) {
+  if (!r.sew.reached) return "not sewn (" + std::to_string(r.sew.iterations) + ")";
+  return std::to_string(r.sew.iterations) + " (" + num(double(r.sew.iterations) / paper_iterations, 2) + "x)";
+}
+
 // "N at dt ms": an iteration count with the step it was taken at
 inline std::string iterations_cell(const RunResult& r) {
   return std::to_string(r.iterations()) + " at " + num(1e3 * r.dt_s, 3) + " ms";
