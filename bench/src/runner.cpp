@@ -461,6 +461,10 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   const BodySource source(scene);
   BodyFrame frame;
   source.frame_into(frame, source.dress_time());
+  // the body stands still while the garment is sewn and draped on it: the clip's velocity at that pose (the
+  // lead-in starts moving at once) is not the body's there (it stays `moving`: the colliders keep what a
+  // moving body needs, velocity maps or a refittable hierarchy, for the animation)
+  frame.velocities.setZero();
   r.body_triangles = frame.triangles.cols();
   ClothMesh cloth = build_cloth(scene, frame);
   std::unique_ptr<Collider> collider = make_scene_collider(scene, scene.collider, source);

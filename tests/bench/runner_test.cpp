@@ -80,6 +80,22 @@ TEST(Runner, TheFirstStaticSceneEndsDressedWithNoSkinShowing) {
   EXPECT_LE(r.seam_gap_max_mm, 2.0);
 }
 
+// a garment dressed on a walking body's pose mid-stride: the body stands still while it is sewn and draped,
+// so the cloth settles on it (given the clip's velocity at that pose, the contacts dragged it along and it
+// never settled, 105 mm of seam still open)
+TEST(Runner, AWalkingBodyStandsStillWhileTheGarmentIsDressedOnIt) {
+  RunOptions quiet;
+  quiet.progress = false;
+  const RunResult r =
+      run_scene(load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/walking/skirt.toml",
+                           {"garment.vertices=200", "collider.name=embree", "collider.dress_with=embree",
+                            "body.dress_at_s=1.5", "body.start_s=1.5", "body.end_s=1.55"}),
+                quiet);
+  ASSERT_FALSE(r.divergence) << r.divergence->reason;
+  EXPECT_TRUE(r.drape.reached);
+  EXPECT_LE(r.window_seam_gap_mm, 2.0);
+}
+
 // rk45 moves points by more than h v_end (its drift): the limits, seam caps and the response must see that
 // displacement, or the seams fling vertices off (it diverged at iteration 98 when they did not)
 TEST(Runner, Rk45SewsAndDrapesTheSkirtWithoutDiverging) {
