@@ -31,6 +31,14 @@ inline std::string accuracy_cells(const RunResult& r) {
          num(r.seam_gap_max_mm, 1) + " | " + num(100 * r.strain_max, 1);
 }
 
+// a table's own columns, then those accuracy_cells fills, whether the run converged and the limits' verdict
+inline std::vector<std::string> with_accuracy_columns(std::vector<std::string> head) {
+  for (const char* c : {"inside [%]", "depth max [mm]", "crossings (%)", "seam gap [mm]", "strain max [%]", "converged",
+                        "meets the limits"})
+    head.push_back(c);
+  return head;
+}
+
 // pictures/NAME.png: front, side and back of a run's end state; returns a markdown link to it
 inline std::string picture(ExperimentContext& ctx, const RunResult& r, const std::string& name,
                            const std::string& label) {
