@@ -92,6 +92,7 @@ std::string step_sweep(ExperimentContext& ctx, const Garment& g, const std::vect
          "steps. Bounds are those of the explicit row's springs and masses.\n\n" +
          t.str();
 }
+
 // what sets our sewing count in the papers' regime: partners of a seam approach each other at seam_speed at
 // most (cap_seam_speeds), so the count is about the widest gap over seam_speed dt; the paper gives neither
 std::string sew_speed_sweep(ExperimentContext& ctx, const std::vector<Garment>& garments, const std::string& collider) {
