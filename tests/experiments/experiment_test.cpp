@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -38,7 +40,7 @@ nlohmann::json without_timings(const RunResult& r) {
 }
 
 TEST(ExperimentContext, PrefetchedRunsEqualRunsInTheProcessButForTimings) {
-  const std::string out = (std::filesystem::temp_directory_path() / "clothbench-prefetch-test").string();
+  const std::string out = test::temp_path("prefetch-test");
   const std::vector<ExperimentContext::Request> grid{
       {"walking/tablecloth_sphere.toml", "sphere", {"garment.vertices=100", "stop.drape_max_s=0.05"}},
       {"walking/tablecloth_sphere.toml", "brute", {"garment.vertices=64", "stop.drape_max_s=0.05"}}};
@@ -64,7 +66,7 @@ TEST(ExperimentContext, PrefetchLeavesOpenGlToThisProcessOnceItHasDrawn) {
   gl->set_body(make_sphere_body(Vec3::Zero(), 0.2f));  // this process has drawn
   EXPECT_TRUE(ExperimentContext::needs_opengl("is-gl"));
   EXPECT_FALSE(ExperimentContext::needs_opengl("is-cpu"));
-  const std::string out = (std::filesystem::temp_directory_path() / "clothbench-prefetch-gl-test").string();
+  const std::string out = test::temp_path("prefetch-gl-test");
   ExperimentContext workers(out, false, 1, 2);
   const ExperimentContext::Request q{
       "walking/tablecloth_sphere.toml", "is-gl", {"garment.vertices=64", "stop.drape_max_s=0.02"}};

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <filesystem>
 #include <fstream>
 
@@ -49,7 +51,7 @@ TEST(History, TwoRunsComparedByTheirCommonConfigurations) {
 }
 
 TEST(History, AppendedLinesReadBackAndAMalformedLineIsNamed) {
-  const std::string path = (std::filesystem::temp_directory_path() / "clothbench_history_test.jsonl").string();
+  const std::string path = test::temp_path("history_test.jsonl");
   std::filesystem::remove(path);
   EXPECT_TRUE(read_history(path).empty());
   append_history(path, history_entry("t", {row("a", 1, 1)}, {}, false));

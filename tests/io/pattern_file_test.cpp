@@ -2,7 +2,9 @@
 #include "clothbench/io/pattern_loader.hpp"
 
 #include <gtest/gtest.h>
+
 #include <sys/wait.h>
+#include "test_support.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -222,7 +224,7 @@ TEST(PatternFile, SimpleOutlinesLoadEitherWayRound) {
 std::pair<int, std::string> run_cli(const std::string& args) {
   const char* bin = std::getenv("CLOTHBENCH_BIN");
   if (!bin) return {-1, ""};
-  const std::string err = ::testing::TempDir() + "garment_cli_stderr.txt";
+  const std::string err = test::temp_path("garment_cli_stderr.txt");
   const int status = std::system(("\"" + std::string(bin) + "\" " + args + " >/dev/null 2>\"" + err + "\"").c_str());
   std::ifstream in(err);
   std::stringstream s;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -78,8 +80,6 @@ ViewerStyle sphere_style() {
   return style;
 }
 
-std::string temp_path(const std::string& name) { return (std::filesystem::temp_directory_path() / name).string(); }
-
 // a strip of cloth through a sphere of radius 0.3 m: the middle inside, the ends outside
 ClothMesh strip() {
   ClothMesh c = make_grid_cloth(11, 2, 0.1f, Vec3(-0.5f, -0.05f, 0.f), Vec3(1, 0, 0), Vec3(0, 1, 0));
@@ -103,7 +103,7 @@ TEST(ViewerGltf, EndStateCarriesStrainAndSignedDistance) {
   const BodyFrame body = make_sphere_body(Vec3::Zero(), 0.3f, 16, 32);
   ClothMesh cloth = strip();
   cloth.positions.row(0) *= 1.1f;  // every spring along x stretched by 10 %
-  const std::string path = temp_path("clothbench_viewer_static.glb");
+  const std::string path = test::temp_path("viewer_static.glb");
   write_viewer_gltf(path, body, cloth, sphere_style());
   const Glb g = read_glb(path);
   ASSERT_EQ(g.doc["meshes"].size(), 2u);
@@ -136,7 +136,7 @@ TEST(ViewerGltf, AnimatedFileStepsThroughTheKeptFrames) {
     frame.cloth.row(0).array() -= 0.02f * float(f);  // the cloth slides 2 cm a frame
     frames.push_back(frame);
   }
-  const std::string path = temp_path("clothbench_viewer_animated.glb");
+  const std::string path = test::temp_path("viewer_animated.glb");
   write_viewer_gltf(path, body, cloth, sphere_style(), frames, 4);  // frames 0, 2, 4, 6
   const Glb g = read_glb(path);
   EXPECT_EQ(g.doc["extensionsRequired"], json::array({"KHR_mesh_quantization"}));
@@ -171,7 +171,8 @@ TEST(ViewerGltf, FramesOfAnotherTopologyAreRefused) {
   const BodyFrame body = make_sphere_body(Vec3::Zero(), 0.3f, 8, 16);
   const ClothMesh cloth = strip();
   std::vector<ViewerFrame> frames{{0.0, body.positions, cloth.positions}, {0.1, body.positions, Points3(3, 5)}};
-  EXPECT_THROW(write_viewer_gltf(temp_path("clothbench_viewer_bad.glb"), body, cloth, sphere_style(), frames), std::invalid_argument);
+  EXPECT_THROW(write_viewer_gltf(test::temp_path("viewer_bad.glb"), body, cloth, sphere_style(), frames),
+               std::invalid_argument);
 }
 
 }  // namespace

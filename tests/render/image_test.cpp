@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -44,7 +46,7 @@ TEST(Image, ColourMapRunsFromDarkToLightAndNanIsGrey) {
 }
 
 TEST(Image, WritesAPngAndNoTemporaryFile) {
-  const std::string path = (std::filesystem::temp_directory_path() / "clothbench_image_test.png").string();
+  const std::string path = test::temp_path("image_test.png");
   Image(8, 4, {1, 2, 3}).write_png(path);
   std::ifstream in(path, std::ios::binary);
   char magic[8] = {};

@@ -2,7 +2,10 @@
 /// Shared test helpers: assets, precision-aware comparisons.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "clothbench/sim/types.hpp"
@@ -15,6 +18,12 @@ inline ::testing::AssertionResult near_vec(const Vec3& a, const Vec3& b, double 
   if (err <= tol) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "(" << a.transpose() << ") vs (" << b.transpose() << "): max error "
                                        << err << " > " << tol;
+}
+
+/// A path in the temporary directory that no other test process uses (two clones' test runs at once
+/// shared fixed names and read each other's files): "clothbench_<pid>_NAME".
+inline std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("clothbench_" + std::to_string(::getpid()) + "_" + name)).string();
 }
 
 /// Angle between two vectors [degrees].
