@@ -20,10 +20,24 @@ inline ::testing::AssertionResult near_vec(const Vec3& a, const Vec3& b, double 
                                        << err << " > " << tol;
 }
 
-/// A path in the temporary directory that no other test process uses (two clones' test runs at once
-/// shared fixed names and read each other's files): "clothbench_<pid>_NAME".
+/// This test process's own temporary folder, removed when the process ends (by the process that made it,
+/// not by a forked worker exiting).
+struct TempFolder {
+  pid_t owner = ::getpid();
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("clothbench_test_" + std::to_string(::getpid()));
+  ~TempFolder() {
+    std::error_code ignored;
+    if (::getpid() == owner) std::filesystem::remove_all(path, ignored);
+  }
+};
+inline TempFolder temp_folder;
+
+/// A path that no other test process uses (two clones' test runs at once shared fixed names in /tmp and
+/// read each other's files): NAME in this process's temporary folder.
 inline std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("clothbench_" + std::to_string(::getpid()) + "_" + name)).string();
+  std::filesystem::create_directories(temp_folder.path);
+  return (temp_folder.path / name).string();
 }
 
 /// Angle between two vectors [degrees].
