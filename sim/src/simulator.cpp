@@ -306,7 +306,7 @@ void Simulator::detect() {
 }
 
 Vec3 Simulator::phase_gravity() const {
-  // gravity off while sewing (dressing section 5)
+  // gravity is off while sewing (Phase::kSew: the seams pull the panels in, gravity drapes them afterwards)
   return phase_ == Phase::kSew ? Vec3::Zero() : params_.gravity;
 }
 
