@@ -344,6 +344,37 @@ bool advance_frame(const BodySource& source, double t, double frame_dt, long ste
   return alive;
 }
 
+// "vertex 812 at (0.180, 1.250, -0.020) m, 13.6 mm inside at t = 2.10 s; the collider answered contact at
+// -2.1 mm": where and when a point is deepest, and what the collider under test said of it at its last step
+std::string describe_vertex(const Simulator& sim, int v, double depth_mm, double t) {
+  const auto p = sim.positions().col(v);
+  const auto& contacts = sim.contacts();
+  const bool hit = contacts.size() > static_cast<std::size_t>(v) && contacts[static_cast<std::size_t>(v)].hit;
+  char text[200];
+  std::snprintf(text, sizeof text, "vertex %d at (%.3f, %.3f, %.3f) m, %.1f mm inside at t = %.2f s; ", v, double(p(0)),
+                double(p(1)), double(p(2)), depth_mm, t);
+  std::string out = text;
+  if (!hit) return out + "the collider answered no contact";
+  std::snprintf(text, sizeof text, "the collider answered contact at %.1f mm",
+                1e3 * double(contacts[static_cast<std::size_t>(v)].depth));
+  return out + text;
+}
+
+// the oracle at one animation frame: a sample, and where the deepest vertex is when this frame is the deepest yet
+void measure_frame(const BodyFrame& frame, const Simulator& sim, double t, RunResult& r) {
+  const Oracle oracle(frame);
+  Accuracy a = oracle.measure(sim.positions());
+  oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
+  const StrainStats strain = sim.strain();
+  if (a.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm)) {
+    std::vector<Real> sd;
+    oracle.signed_distance(sim.positions(), sd);
+    const auto deepest = std::min_element(sd.begin(), sd.end(), [](Real x, Real y) { return x < y || y != y; });
+    r.depth_max_where = describe_vertex(sim, int(deepest - sd.begin()), -1e3 * double(*deepest), t);
+  }
+  r.frame_samples.push_back({t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});
+}
+
 // the lead-in (dress_at_s -> start_s, with the dressing collider, not measured), then the measured window
 void animate(const Scene& scene, const BodySource& source, Simulator& sim, Collider& collider, Collider& dresser,
              BodyFrame& frame, Progress& progress, const RunOptions& options, RunResult& r) {
@@ -376,14 +407,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
     Stopwatch outside;  // the oracle and the caller's callback are not the animation's time
     const double outside_cpu = thread_cpu_ms();
-    if (options.measure_frames && alive) {
-      const Oracle oracle(frame);
-      Accuracy a = oracle.measure(sim.positions());
-      oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
-      const StrainStats strain = sim.strain();
-      r.frame_samples.push_back(
-          {t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});
-    }
+    if (options.measure_frames && alive) measure_frame(frame, sim, t, r);
     if (options.on_frame) options.on_frame(f, t, frame, sim);
     not_animation_ms += outside.ms();
     not_animation_cpu_ms += thread_cpu_ms() - outside_cpu;

@@ -38,6 +38,7 @@ TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   r.accuracy.crossings_pct = 0.61;
   r.strain_max = 0.151;
   r.strain_max_where = "spring 4863";
+  r.depth_max_where = "vertex 1916";
   r.sew_iteration_ms = {0.5f, 0.25f};
   r.converged = true;
   r.frame_samples = {{1.033, 0.1, 0.5, 0.2, 0.12, 0.08}, {1.067, 0, 0, 0.05, 0.11, 0.07}};
@@ -56,6 +57,7 @@ TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   EXPECT_EQ(b.frame_samples[1].crossings_pct, 0.05);
   EXPECT_EQ(b.frame_samples[1].strain_p99, 0.07);
   EXPECT_EQ(b.window_seam_gap_mm, 1.5);
+  EXPECT_EQ(b.depth_max_where, "vertex 1916");
   RunResult none = r;
   none.divergence.reset();
   EXPECT_FALSE(run_result_from_json(to_json(none)).divergence.has_value());

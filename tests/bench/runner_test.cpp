@@ -41,6 +41,26 @@ TEST(Runner, MovingSphereIsAnimatedAndMeasured) {
   EXPECT_LE(r.dt_s, r.dt_bound_s);
 }
 
+// --every-frame: one oracle sample per animation frame, and the deepest vertex of the deepest frame named
+// (a sphere thrust up through the cloth at 3 m/s leaves points inside)
+TEST(Runner, EveryFrameIsMeasuredAndTheDeepestPointIsNamed) {
+  RunOptions o;
+  o.progress = false;
+  o.measure_frames = true;
+  Scene s = small_tablecloth();
+  s.body.velocity = Vec3(0, 3, 0);
+  s.solver.push_out = false;
+  const RunResult r = run_scene(s, o);
+  ASSERT_FALSE(r.divergence);
+  ASSERT_EQ(r.frame_samples.size(), static_cast<std::size_t>(r.frames));
+  const double deepest = r.frame_max(&FrameSample::depth_max_mm);
+  ASSERT_GT(deepest, 0);
+  char depth[32];
+  std::snprintf(depth, sizeof depth, "%.1f mm inside", deepest);
+  EXPECT_EQ(r.depth_max_where.rfind("vertex ", 0), 0u) << r.depth_max_where;
+  EXPECT_NE(r.depth_max_where.find(depth), std::string::npos) << r.depth_max_where;
+}
+
 // the sphere's velocity applies to the animation only: dressing sees a body at rest
 TEST(Runner, MovingSphereRestsWhileDressing) {
   RunOptions quiet;
