@@ -243,6 +243,7 @@ void read_collider(Section s, Scene& scene) {
   if (o.views != 2 && o.views != 4 && o.views != 6)
     s.fail(*s.find("views"), "views", "must be 2 (front/back), 4 (+ left/right) or 6 (+ top/bottom), got " +
                                           std::to_string(o.views));
+  s.number("layers", o.layers, 1, 8);
   s.flag("fit_extent", o.fit_extent);
   s.flag("float_maps", o.float_maps);
   s.flag("tangent_plane", o.tangent_plane);
@@ -416,7 +417,7 @@ std::string collider_config(const Scene& s) {
   w("name", s.collider)("dress_with", s.dress_with)("tol", double(o.tol))("search_radius", double(o.search_radius));
   w("map_size", o.map_size)("side_layer", o.side_layer)("fit_extent", o.fit_extent)("float_maps", o.float_maps);
   w("max_speed", double(o.max_speed))("threads", o.threads)("coherent", o.coherent)("face_normals", o.face_normals);
-  w("voxel_size", double(o.voxel_size))("views", o.views)("side_layer_mm", double(o.side_layer_mm));
+  w("voxel_size", double(o.voxel_size))("views", o.views)("layers", o.layers)("side_layer_mm", double(o.side_layer_mm));
   w("tangent_plane", o.tangent_plane);
   return w.str();
 }

@@ -186,17 +186,37 @@ class CpuMapRenderer final : public MapRenderer {
         const std::int64_t e0 = edge(w[1], w[2], sx, sy), e1 = edge(w[2], w[0], sx, sy), e2 = edge(w[0], w[1], sx, sy);
         if (e0 < 0 || e1 < 0 || e2 < 0) continue;
         if ((e0 == 0 && !tie0) || (e1 == 0 && !tie1) || (e2 == 0 && !tie2)) continue;
-        shade(maps, maps.index(view, col, row - row_offset), col, row, p);
+        shade(maps, view, static_cast<std::size_t>(row - row_offset) * n + col, col, row, p);
       }
     }
   }
 
-  // depth test (GL_LESS on the z-buffer) and attribute write at the target's pixel (col, row)
-  void shade(MapSet& maps, std::size_t i, int col, int row, const Planes& p) const {
+  // depth test (GL_LESS on the z-buffer) and attribute write at the target's pixel (col, row), `pixel`
+  // within the view. An even view with layers keeps its `layers` nearest surfaces in order, as depth
+  // peeling finds them (layer l: the nearest fragment beyond layer l - 1 + kPeelGap, the first drawn of equals)
+  void shade(MapSet& maps, int view, std::size_t pixel, int col, int row, const Planes& p) const {
     // llvmpipe's interpolation (lp_bld_interp): z_origin + dzdx col, then + dzdy row, clamped to [0, 1]
     const float x = static_cast<float>(col), y = static_cast<float>(row);
     const float zbuf = std::clamp(mul_add(fused_, p.dzdy, y, mul_add(fused_, p.dzdx, x, p.z_origin)), 0.0f, 1.0f);
-    if (!(zbuf < maps.z[i])) return;
+    const MapFrame& f = maps.frame;
+    const int layers = view % 2 == 0 ? f.layers : 1;
+    const auto element = [&](int layer) { return f.peel_map(view, layer) * maps.view_pixels() + pixel; };
+    const auto depth = [&](int layer) { return maps.z[element(layer)]; };
+    int slot = 1;
+    while (slot <= layers && !(zbuf < depth(slot))) ++slot;
+    // beyond every layer kept, or not beyond the layer above by the peeling gap
+    if (slot > layers || (slot > 1 && zbuf <= depth(slot - 1) + kPeelGap)) return;
+    // layers the new one hides (within the gap beyond it) go; else the deeper ones move down one
+    int hidden = 0;
+    while (slot + hidden <= layers && depth(slot + hidden) <= zbuf + kPeelGap) ++hidden;
+    if (hidden == 0) {
+      for (int layer = layers; layer > slot; --layer) maps.copy_element(element(layer - 1), element(layer));
+    } else {
+      for (int layer = slot + 1; layer + hidden - 1 <= layers; ++layer)
+        maps.copy_element(element(layer + hidden - 1), element(layer));
+      for (int layer = layers - hidden + 2; layer <= layers; ++layer) maps.z[element(layer)] = 1.0f;
+    }
+    const std::size_t i = element(slot);
     maps.z[i] = zbuf;
     const float dx = x + 0.5f - p.x0, dy = y + 0.5f - p.y0;
     Attributes nv;

@@ -3,6 +3,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -30,14 +31,21 @@ void main() {
 
 // float targets keep the interpolated vectors; 8-bit targets get dressing Eq. 6 and walking Eq. 9
 // (the printed Eq. 9 reads 0.5 v + 0.5 / maxv; its inverse, Eq. 10, fixes it as 0.5 v / maxv + 0.5)
+// depth peeling (peel != 0): only fragments beyond the previous layer's z-buffer value at the pixel
+// by more than `gap` (kPeelGap), read from `previous` (that layer, laid out as the target)
 constexpr const char* kFragmentShader = R"(#version 330 core
 noperspective in vec3 body_normal;
 noperspective in vec3 body_velocity;
 uniform int encode8;
 uniform float max_speed;
+uniform int peel;
+uniform sampler2D previous;
+uniform float gap;
 layout(location = 0) out vec4 normal_out;
 layout(location = 1) out vec4 velocity_out;
 void main() {
+  if (peel != 0 && gl_FragCoord.z <= texelFetch(previous, ivec2(gl_FragCoord.xy), 0).r + gap)
+    discard;
   if (encode8 != 0) {
     normal_out = vec4(0.5 * body_normal + 0.5, 1.0);
     velocity_out = vec4(0.5 * body_velocity / max_speed + 0.5, 1.0);
@@ -55,6 +63,7 @@ class GlMapRenderer final : public MapRenderer {
   ~GlMapRenderer() override {
     make_current();
     release_targets();
+    glDeleteTextures(1, &previous_);
     glDeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
     glDeleteVertexArrays(1, &vao_);
     glDeleteProgram(program_);
@@ -67,7 +76,9 @@ class GlMapRenderer final : public MapRenderer {
     targets(maps);
     upload(body, maps.has_velocity);
     draw(body, maps);
-    read_back(maps);
+    read_back(maps, 0, views_, 0);
+    for (int layer = 2; layer <= maps.frame.layers; ++layer) peel(body, maps, layer);
+    depth_from_zbuffer(maps);
   }
 
  private:
@@ -78,6 +89,15 @@ class GlMapRenderer final : public MapRenderer {
     u_clip_ = glGetUniformLocation(program_, "clip_from_world");
     u_encode8_ = glGetUniformLocation(program_, "encode8");
     u_max_speed_ = glGetUniformLocation(program_, "max_speed");
+    u_peel_ = glGetUniformLocation(program_, "peel");
+    glUseProgram(program_);
+    glUniform1i(glGetUniformLocation(program_, "previous"), 0);
+    glUniform1f(glGetUniformLocation(program_, "gap"), kPeelGap);
+    // the previous layer's z-buffer values, fetched texel by texel
+    glGenTextures(1, &previous_);
+    glBindTexture(GL_TEXTURE_2D, previous_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     // vertex arrays: positions, normals, velocities, indices
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
@@ -146,47 +166,80 @@ class GlMapRenderer final : public MapRenderer {
   void draw(const BodyFrame& body, const MapSet& maps) {
     const std::array<GLenum, 2> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(2, buffers.data());
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1.0);
-    glDisable(GL_SCISSOR_TEST);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    clear();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     glUseProgram(program_);
     glUniform1i(u_encode8_, maps.float_maps ? 0 : 1);
     glUniform1f(u_max_speed_, maps.max_speed);
-    glEnable(GL_SCISSOR_TEST);
-    for (int view = 0; view < views_; ++view) {
-      glViewport(0, view * size_, size_, size_);
-      glScissor(0, view * size_, size_, size_);
-      const std::array<float, 16> m = clip_from_world(maps.frame, view);
-      glUniformMatrix4fv(u_clip_, 1, GL_FALSE, m.data());
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(body.triangles.size()), GL_UNSIGNED_INT, nullptr);
-    }
+    glUniform1i(u_peel_, 0);
+    for (int view = 0; view < views_; ++view) draw_view(body, maps.frame, view);
   }
 
-  // depth and colour targets straight into the MapSet; z-buffer to geometry space (dressing Eq. 5)
-  void read_back(MapSet& maps) {
+  void clear() {
+    glClearColor(0, 0, 0, 0);
+    glClearDepth(1.0);
+    glDisable(GL_SCISSOR_TEST);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+  }
+
+  // one view into its rows of the target
+  void draw_view(const BodyFrame& body, const MapFrame& frame, int view) {
+    glViewport(0, view * size_, size_, size_);
+    glScissor(0, view * size_, size_, size_);
+    const std::array<float, 16> m = clip_from_world(frame, view);
+    glUniformMatrix4fv(u_clip_, 1, GL_FALSE, m.data());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(body.triangles.size()), GL_UNSIGNED_INT, nullptr);
+  }
+
+  // depth peeling: layer `layer` of every even view, drawn again into the view's own rows (the
+  // same window coordinates, so the same depths, as the first pass and the CPU rasteriser) beyond
+  // layer - 1's z-buffer values, uploaded as a texture laid out as the target; read back into the layer's maps
+  void peel(const BodyFrame& body, MapSet& maps, int layer) {
+    const MapFrame& f = maps.frame;
+    const std::size_t n = maps.view_pixels();
+    previous_depth_.assign(views_ * n, 1.0f);
+    for (int view = 0; view < views_; view += 2)
+      std::copy_n(maps.z.begin() + f.peel_map(view, layer - 1) * n, n, previous_depth_.begin() + view * n);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, previous_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, size_, views_ * size_, 0, GL_RED, GL_FLOAT, previous_depth_.data());
+    clear();
+    glUniform1i(u_peel_, 1);
+    for (int view = 0; view < views_; view += 2) draw_view(body, f, view);
+    glUniform1i(u_peel_, 0);
+    for (int view = 0; view < views_; view += 2) read_back(maps, view, 1, f.peel_map(view, layer));
+  }
+
+  // z-buffer values and colours of `count` views from `view` into maps `map`, map + 1, ... (raw
+  // z-buffer values: depth_from_zbuffer turns them into coordinates once every layer is in)
+  void read_back(MapSet& maps, int view, int count, int map) {
+    const std::size_t at = static_cast<std::size_t>(map) * maps.view_pixels();
+    const GLint y = view * size_;
+    const GLsizei rows = count * size_;
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, size_, views_ * size_, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data());
+    glReadPixels(0, y, size_, rows, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data() + at);
     const GLenum type = maps.float_maps ? GL_FLOAT : GL_UNSIGNED_BYTE;
+    const auto colours = [&](std::vector<float>& floats, std::vector<std::uint8_t>& bytes) {
+      return maps.float_maps ? static_cast<void*>(floats.data() + 4 * at) : bytes.data() + 4 * at;
+    };
     glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glReadPixels(0, 0, size_, views_ * size_, GL_RGBA, type,
-                 maps.float_maps ? static_cast<void*>(maps.normal.data()) : maps.normal8.data());
+    glReadPixels(0, y, size_, rows, GL_RGBA, type, colours(maps.normal, maps.normal8));
     if (maps.has_velocity) {
       glReadBuffer(GL_COLOR_ATTACHMENT1);
-      glReadPixels(0, 0, size_, views_ * size_, GL_RGBA, type,
-                   maps.float_maps ? static_cast<void*>(maps.velocity.data()) : maps.velocity8.data());
+      glReadPixels(0, y, size_, rows, GL_RGBA, type, colours(maps.velocity, maps.velocity8));
     }
-    depth_from_zbuffer(maps);
   }
 
   osmesa::Context context_;  // first member: destroyed after the GL objects the destructor deletes
-  GLuint program_ = 0, vao_ = 0, fbo_ = 0;
+  GLuint program_ = 0, vao_ = 0, fbo_ = 0, previous_ = 0;
   std::array<GLuint, 4> vbo_{};  // positions, normals, velocities, indices
   std::array<GLuint, 3> rbo_{};  // normal, velocity, depth
-  GLint u_clip_ = -1, u_encode8_ = -1, u_max_speed_ = -1;
+  GLint u_clip_ = -1, u_encode8_ = -1, u_max_speed_ = -1, u_peel_ = -1;
+  std::vector<float> previous_depth_;  // the previous layer's z-buffer values, laid out as the target
   int size_ = 0;
   int views_ = 2;
   bool float_ = true;

@@ -59,6 +59,7 @@ inline std::size_t element(const MapSet& m, int view, int col, int row) {
 
 // normal and velocity blended bilinearly over the four pixel centres around world (a, b), the
 // view's column and row coordinates; false (outputs untouched) unless all four are body pixels
+// (a view's map only: a peeled map's neighbours may hold another surface)
 bool blend(const MapSet& m, int view, Real a_world, Real b_world, Vec3& normal, Vec3& velocity) {
   const MapFrame& f = m.frame;
   const Real u = (a_world - f.origin(MapFrame::column_axis(view))) / f.pixel - 0.5f;
@@ -83,12 +84,44 @@ bool blend(const MapSet& m, int view, Real a_world, Real b_world, Vec3& normal, 
 // one pair of opposite views' answer at a point (views 2 pair and 2 pair + 1)
 struct PairAnswer {
   Real depth = 0;   // max(p - front surface, back surface - p) along the pair's axis [m]; +inf empty
-  int view = 0;     // the view whose surface is nearer
+  int map = 0;      // the map (a view, or a layer peeled from the front view) whose surface is nearer
   int col = 0, row = 0;  // the pixel (unmirrored window column and row)
   bool side = false;     // a side-layer pixel: the tolerance band outside the silhouette (dressing 5.4)
   // seen from outside: beyond the pair's surfaces, nothing drawn, or the side layer
   bool outside() const { return depth > 0 || side; }
 };
+
+// With peeled layers the line through the pixel lists where it enters and leaves the body: layer 1
+// (the front view's surface, largest coordinate) enters, layer 2 leaves, layer 3 enters again, ... A
+// point below layer 1 is inside between an entering layer and the next, outside in a gap between a
+// leaving layer and the next (depth > 0: the nearer of the two); its depth and map are the nearer
+// layer's. The pair's answer stands where the layers cannot say: an odd count of surfaces on a line
+// the peeling saw whole (a grazing line), or below the last layer kept when there may be more.
+void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAnswer& a) {
+  const MapFrame& f = m.frame;
+  Real above = m.z[element(m, front, col, row)];
+  int above_map = front;
+  for (int layer = 2; layer <= f.layers; ++layer) {
+    const int map = f.peel_map(front, layer);
+    const std::size_t i = element(m, map, col, row);
+    // the line's surfaces end above x: below the last (leaving) one the back view answers, as it
+    // does for an odd count (a grazing line)
+    if (m.mask[i] != MapSet::kBody) return;
+    const Real below = m.z[i];
+    if (x >= below) {
+      const bool inside = layer % 2 == 0;  // between an entering layer (odd) and a leaving one
+      const Real to_above = above - x, to_below = x - below;
+      a.depth = inside ? -std::min(to_above, to_below) : std::min(to_above, to_below);
+      a.map = to_above <= to_below ? above_map : map;
+      return;
+    }
+    above = below, above_map = map;
+  }
+  // more surfaces may follow the last layer kept: between it and the back view, the pair's answer
+  const Real d_back = m.z[element(m, front + 1, col, row)] - x;
+  a.depth = std::max(x - above, d_back);
+  a.map = x - above >= d_back ? above_map : front + 1;
+}
 
 // dressing Eq. 5/9, walking Eq. 11/12 along the pair's axis; false when p is outside its image (the pair a
 // template argument: its axes are constants, as they were before there were more views than the papers' two)
@@ -106,8 +139,9 @@ bool pair_answer(const MapSet& m, const Vec3& p, PairAnswer& a) {
   const Real d_front = p[axis] - m.z[fi], d_back = m.z[bi] - p[axis];
   a.depth = std::max(d_front, d_back);
   // the nearer surface's map answers (beyond the local body centre: the front map)
-  a.view = d_front >= d_back ? front : front + 1;
+  a.map = d_front >= d_back ? front : front + 1;
   a.side = m.mask[fi] == MapSet::kSide;
+  if (f.layers > 1 && d_front < 0 && m.mask[fi] == MapSet::kBody) between_layers(m, front, a.col, a.row, p[axis], a);
   return true;
 }
 
@@ -151,8 +185,8 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
     c.depth = std::max(depth_z, tol);
     return false;
   }
-  const int view = a.view, cu = MapFrame::column_axis(view), rv = MapFrame::row_axis(view);
-  const std::size_t i = element(maps_, view, a.col, a.row);
+  const int view = f.view_of(a.map), cu = MapFrame::column_axis(view), rv = MapFrame::row_axis(view);
+  const std::size_t i = element(maps_, a.map, a.col, a.row);
   c.depth = depth_z;
   c.normal = maps_.normal_at(i);
   bool blended = false;
@@ -172,7 +206,7 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
     }
     // normal and velocity at the foot of the perpendicular, blended over four pixel centres
     const Vec3 foot = p - d * c.normal;
-    blended = blend(maps_, view, foot[cu], foot[rv], c.normal, c.body_velocity);
+    blended = a.map == view && blend(maps_, view, foot[cu], foot[rv], c.normal, c.body_velocity);
   }
   if (!blended) c.body_velocity = maps_.velocity_at(i);
   // side-layer pixels stand for the tolerance band outside the silhouette (dressing 5.4)

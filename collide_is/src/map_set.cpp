@@ -12,6 +12,9 @@ void check_view_options(const ColliderOptions& options) {
   if (options.views != 2 && options.views != 4 && options.views != 6)
     throw std::invalid_argument("image-space maps: views must be 2 (front/back), 4 (+ left/right) or 6 (+ top/bottom), got " +
                                 std::to_string(options.views));
+  if (options.layers < 1 || options.layers > 8)
+    throw std::invalid_argument("image-space maps: layers must be 1 (the nearest surface) to 8, got " +
+                                std::to_string(options.layers));
   if (!(options.side_layer_mm >= 0) || !std::isfinite(options.side_layer_mm))
     throw std::invalid_argument("image-space maps: side_layer_mm must be a finite number >= 0 (0: one pixel), got " +
                                 std::to_string(options.side_layer_mm));
@@ -46,6 +49,7 @@ MapFrame make_map_frame(const Box3& box, const ColliderOptions& options) {
   if (!(f.z_max > f.z_min)) throw std::invalid_argument("image-space maps: body bounding box has no depth");
   // the views along X and Y (beyond the papers): the same pixel, the square centred on the box in z
   f.views = options.views;
+  f.layers = options.layers;
   f.z0 = c.z() - 0.5f * f.size * f.pixel;
   f.x_min = box.min.x() - options.tol;
   f.x_max = box.max.x() + options.tol;
@@ -103,11 +107,12 @@ void MapSet::reset(const MapFrame& new_frame, bool floats, bool with_velocity, R
   max_speed = maxv;
   const std::size_t n = view_pixels();
   const float inf = std::numeric_limits<float>::infinity();
-  const std::size_t views = static_cast<std::size_t>(new_frame.views);
-  // depth: front (even views) empty = -inf, back (odd) empty = +inf, so the comparison of Eq. 9
-  // always fails there
+  const std::size_t views = static_cast<std::size_t>(new_frame.map_count());
+  // depth: front (even views and their layers) empty = -inf, back (odd) empty = +inf, so the
+  // comparison of Eq. 9 always fails there
   z.resize(views * n);
-  for (std::size_t k = 0; k < views; ++k) std::fill_n(z.begin() + k * n, n, k % 2 == 0 ? -inf : inf);
+  for (std::size_t k = 0; k < views; ++k)
+    std::fill_n(z.begin() + k * n, n, new_frame.view_of(static_cast<int>(k)) % 2 == 0 ? -inf : inf);
   mask.assign(views * n, kEmpty);
   // attributes in the chosen encoding only
   normal.resize(floats ? 4 * views * n : 0);
@@ -137,21 +142,16 @@ Vec3 MapSet::velocity_at(std::size_t i) const {
   return max_speed * (Vec3(c[0], c[1], c[2]) * (2.0f / 255.0f) - Vec3::Ones());
 }
 
-namespace {
-
-// copies every attribute of element `from` to element `to`
-void copy_pixel(MapSet& m, std::size_t from, std::size_t to) {
-  m.z[to] = m.z[from];
-  if (m.float_maps) {
-    std::copy_n(&m.normal[4 * from], 4, &m.normal[4 * to]);
-    if (m.has_velocity) std::copy_n(&m.velocity[4 * from], 4, &m.velocity[4 * to]);
+void MapSet::copy_element(std::size_t from, std::size_t to) {
+  z[to] = z[from];
+  if (float_maps) {
+    std::copy_n(&normal[4 * from], 4, &normal[4 * to]);
+    if (has_velocity) std::copy_n(&velocity[4 * from], 4, &velocity[4 * to]);
   } else {
-    std::copy_n(&m.normal8[4 * from], 4, &m.normal8[4 * to]);
-    if (m.has_velocity) std::copy_n(&m.velocity8[4 * from], 4, &m.velocity8[4 * to]);
+    std::copy_n(&normal8[4 * from], 4, &normal8[4 * to]);
+    if (has_velocity) std::copy_n(&velocity8[4 * from], 4, &velocity8[4 * to]);
   }
 }
-
-}  // namespace
 
 namespace {
 
@@ -175,7 +175,7 @@ void grow_ring(MapSet& maps, int view, std::vector<std::uint8_t>& rings, int rin
           const bool take = maps.mask[j] == MapSet::kEmpty ||
                             (maps.mask[j] == MapSet::kSide && rings[j] == ring && nearer(maps.z[i], maps.z[j]));
           if (!take) continue;
-          copy_pixel(maps, i, j);
+          maps.copy_element(i, j);
           maps.mask[j] = MapSet::kSide;
           rings[j] = static_cast<std::uint8_t>(ring);
         }
@@ -205,7 +205,7 @@ void depth_from_zbuffer(MapSet& maps) {
   const float inf = std::numeric_limits<float>::infinity();
   for (std::size_t i = 0; i < maps.z.size(); ++i) {
     const float zbuf = maps.z[i];
-    const int view = static_cast<int>(i / n);
+    const int view = f.view_of(static_cast<int>(i / n));
     const bool front = view % 2 == 0;
     // nothing drawn: the comparison of Eq. 9 must fail there
     if (zbuf >= 1.0f) {

@@ -134,9 +134,8 @@ TEST(Scene, ConfigHashFollowsTheEffectiveConfiguration) {
   // any field of any section changes it
   for (const char* set : {"body.fps=30", "garment.vertices=401", "material.density=0.2", "solver.threshold=0.06",
                           "solver.face_queries=true", "collider.name=brute", "collider.map_size=512",
-                          "collider.views=4", "collider.side_layer_mm=3", "collider.tangent_plane=false",
-                          "stop.drape_max_s=0.5",
-                          "stop.max_iterations=10"})
+                          "collider.views=4", "collider.layers=3", "collider.side_layer_mm=3",
+                          "collider.tangent_plane=false", "stop.drape_max_s=0.5", "stop.max_iterations=10"})
     EXPECT_NE(config_hash(parse_scene(text, "s.toml", {set})), hash) << set;
   Scene with_collider = base;
   with_collider.collider = "embree";  // `run --collider` after loading
@@ -161,6 +160,14 @@ TEST(Scene, ColliderViewsAndSideLayerWidth) {
   }
   EXPECT_NE(error_of("", {"collider.views=3"}).find("collider.views (from --set): must be 2"), std::string::npos);
   EXPECT_NE(error_of("[collider]\nside_layer_mm = -1\n").find("collider.side_layer_mm"), std::string::npos);
+  // peeled layers: 1 (the papers' nearest surface) to 8, whole numbers
+  EXPECT_EQ(parse_scene("", "s.toml").collider_options.layers, 1);
+  EXPECT_EQ(parse_scene("[collider]\nlayers = 3\n", "s.toml").collider_options.layers, 3);
+  for (const char* bad : {"0", "9", "2.5"}) {
+    const std::string e = error_of(std::string("[collider]\nlayers = ") + bad + "\n");
+    EXPECT_NE(e.find("s.toml:2"), std::string::npos) << e;
+    EXPECT_NE(e.find("collider.layers"), std::string::npos) << e;
+  }
 }
 
 // issue 18: the moving body's skin must stay below the hit distance, or every contact would be pushed out

@@ -41,6 +41,16 @@ struct MapFrame {
   Real z0 = 0;     ///< world z of the square's edge in the views along X and Y [m]
   Real x_min = 0, x_max = 0;  ///< near/far planes of the views along X [m]
   Real y_min = 0, y_max = 0;  ///< near/far planes of the views along Y [m]
+  int layers = 1;             ///< surfaces kept per pixel by each even view (depth peeling; 1: the nearest only)
+
+  /// Maps in a MapSet: the views, then layers 2..layers of every even view (peeled maps).
+  int map_count() const { return views + views / 2 * (layers - 1); }
+  /// Map holding `layer` (1 = the view itself) of even view `view`: layer by layer, views in order.
+  int peel_map(int view, int layer) const { return layer == 1 ? view : views + (layer - 2) * (views / 2) + view / 2; }
+  /// The view a map belongs to: itself for a view, its even view for a peeled map.
+  int view_of(int map) const { return map < views ? map : 2 * ((map - views) % (views / 2)); }
+  /// Layer of a map: 1 for a view, 2..layers for a peeled map.
+  int layer_of(int map) const { return map < views ? 1 : (map - views) / (views / 2) + 2; }
 
   /// Continuous front-view column of world x [pixels].
   Real front_u(Real x) const { return (x - x0) / pixel; }
@@ -75,14 +85,23 @@ std::array<float, 16> clip_from_world(const MapFrame& frame, int view);
 /// box is flat, or options.views / side_layer_mm are invalid (check_view_options).
 MapFrame make_map_frame(const Box3& box, const ColliderOptions& options);
 
-/// Throws std::invalid_argument unless options.views is 2, 4 or 6 and options.side_layer_mm is a
-/// finite number >= 0 (messages name the allowed values).
+/// Throws std::invalid_argument unless options.views is 2, 4 or 6, options.layers is 1 to 8 and
+/// options.side_layer_mm is a finite number >= 0 (messages name the allowed values).
 void check_view_options(const ColliderOptions& options);
 
-/// Every view's maps (frame.views of them), front then back then the extra views, each
+/// Depth peeling's gap: layer l of a view is the nearest surface more than this beyond layer l - 1 in
+/// z-buffer units (1e-4 of the depth range: 0.03-0.2 mm), wider than the few micrometres by which a fragment's
+/// depth in the shader may differ from the depth buffer's, narrower than any two surfaces worth telling apart.
+inline constexpr float kPeelGap = 1e-4f;
+
+/// Every view's maps (frame.views of them), front then back then the extra views, then the peeled
+/// maps (frame.layers > 1: layer 2 of views 0, 2 and 4, then layer 3 of each, ...), each
 /// `size x size` pixels, row-major, row 0 at the bottom, columns in the view's own window order
-/// (so the back map is mirrored in x, dressing Eq. 8). Pixel p of view k (0 front, 1 back) is
-/// element k * size^2 + row * size + col. `z` holds each view's surface coordinate along its axis.
+/// (so the back map is mirrored in x, dressing Eq. 8; a peeled map as its view). Pixel p of map k
+/// (0 front, 1 back) is element k * size^2 + row * size + col. `z` holds each map's surface
+/// coordinate along its view's axis. Peeling: layer l of a view is the nearest surface beyond
+/// layer l - 1 (its z-buffer value larger by more than kPeelGap), so along the pixel's line the even view's layers
+/// and the odd view's nearest surface list where the line enters and leaves the body.
 struct MapSet {
   static constexpr int kFront = 0;
   static constexpr int kBack = 1;
@@ -95,18 +114,18 @@ struct MapSet {
   bool float_maps = true;             ///< float normal/velocity (true) or 8-bit colours (dressing Eq. 6, walking Eq. 9)
   bool has_velocity = false;          ///< velocity maps were rendered (moving bodies only)
   Real max_speed = 3;                 ///< maxv of the 8-bit velocity encoding [m/s] (walking Eq. 9/10)
-  std::vector<float> z;               ///< body surface z [m] (views x size^2); -inf (even views) / +inf (odd) where empty
-  std::vector<std::uint8_t> mask;     ///< kEmpty, kBody or kSide (views x size^2)
-  std::vector<float> normal;          ///< float maps: interpolated normal xyz + 1 (4 x views x size^2)
-  std::vector<float> velocity;        ///< float maps with velocity: xyz + 1 [m/s] (4 x views x size^2)
+  std::vector<float> z;            ///< body surface z [m] (maps x size^2); -inf (even views) / +inf (odd) where empty
+  std::vector<std::uint8_t> mask;  ///< kEmpty, kBody or kSide (maps x size^2)
+  std::vector<float> normal;       ///< float maps: interpolated normal xyz + 1 (4 x maps x size^2)
+  std::vector<float> velocity;     ///< float maps with velocity: xyz + 1 [m/s] (4 x maps x size^2)
   std::vector<std::uint8_t> normal8;  ///< 8-bit maps: RGBA, RGB = 0.5 n + 0.5 (dressing Eq. 6)
   std::vector<std::uint8_t> velocity8;  ///< 8-bit maps: RGBA, RGB = 0.5 v / maxv + 0.5 (walking Eq. 9)
 
   /// Pixels per view.
   std::size_t view_pixels() const { return static_cast<std::size_t>(frame.size) * frame.size; }
-  /// Element index of (view, col, row).
-  std::size_t index(int view, int col, int row) const {
-    return view * view_pixels() + static_cast<std::size_t>(row) * frame.size + col;
+  /// Element index of (map, col, row); a view's map is the view's index.
+  std::size_t index(int map, int col, int row) const {
+    return map * view_pixels() + static_cast<std::size_t>(row) * frame.size + col;
   }
   /// Unit normal at element i (dressing Eq. 7 for 8-bit maps); zero where the map is empty.
   Vec3 normal_at(std::size_t i) const;
@@ -114,13 +133,15 @@ struct MapSet {
   Vec3 raw_normal_at(std::size_t i) const;
   /// Body velocity at element i [m/s] (walking Eq. 10 for 8-bit maps); zero without velocity maps.
   Vec3 velocity_at(std::size_t i) const;
+  /// Copies depth, normal and velocity (not the mask) of element `from` to element `to`.
+  void copy_element(std::size_t from, std::size_t to);
   /// Sizes every array for `frame` and the encoding, clearing z to +-inf and the mask to kEmpty.
   void reset(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv);
 };
 
 /// Adds the silhouette layer of dressing 5.4: every empty pixel with a body pixel among its 8
 /// neighbours takes the depth, normal and velocity of the neighbour nearest to the camera and
-/// becomes kSide. Applied to every view. `rings` > 1 repeats it outwards from the last ring
+/// becomes kSide. Applied to every view (not to the peeled maps). `rings` > 1 repeats it outwards from the last ring
 /// (a layer `rings` pixels wide, Chebyshev distance), each ring taking its values from the previous.
 void add_side_layer(MapSet& maps, int rings = 1);
 
@@ -129,7 +150,7 @@ void add_side_layer(MapSet& maps, int rings = 1);
 int side_layer_rings(const ColliderOptions& options, Real pixel);
 
 /// Turns maps.z from z-buffer values (0 at the view's near plane, 1 at its far plane; 1 where
-/// nothing was drawn) into the body surface coordinate along each view's axis [m] (dressing Eq. 5,
+/// nothing was drawn) into the body surface coordinate along each map's view axis [m] (dressing Eq. 5,
 /// tol applied at the query) and sets the mask to kBody where something was drawn, kEmpty
 /// (z = -inf for even views, +inf for odd) elsewhere.
 void depth_from_zbuffer(MapSet& maps);
@@ -143,8 +164,8 @@ class MapRenderer {
   virtual ~MapRenderer() = default;
   /// "gl" or "cpu".
   virtual std::string_view name() const = 0;
-  /// Renders depth and normal maps (and velocity maps when maps.has_velocity) of `body`, mask
-  /// kBody or kEmpty. Does not add the side layer. Never throws once set up.
+  /// Renders depth and normal maps (and velocity maps when maps.has_velocity) of `body`, every
+  /// view and peeled layer, mask kBody or kEmpty. Does not add the side layer. Never throws once set up.
   virtual void render(const BodyFrame& body, MapSet& maps) = 0;
 };
 

@@ -62,6 +62,8 @@ struct ColliderOptions {
   Real side_layer_mm = 0;       ///< image space: > 0 widens that layer to this many millimetres
                                 ///< (at least one pixel), so it does not thin as the map grows
   int views = 2;                ///< image space: 2 (the papers' front/back), 4 (+ along +-X) or 6 (+ +-Y)
+  int layers = 1;               ///< image space: surfaces each pair keeps along its axis, peeled from its + face
+                                ///< (1: the papers' first and last surface only; up to 8)
   bool tangent_plane = true;    ///< image space: refine near points by the surface's tangent plane (ours);
                                 ///< false: the papers' comparison along the view axis alone (dressing Eq. 9)
   bool fit_extent = false;      ///< image space: map square fitted to the body, not body height

@@ -1,0 +1,169 @@
+// Image space beyond the papers: surfaces peeled along each pair's axis (ColliderOptions::layers), so a
+// point inside a body part that other parts hide from every camera is answered by that part's surface.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+#include "clothbench/collide_is/image_space_collider.hpp"
+#include "is_test_bodies.hpp"
+#include "test_support.hpp"
+
+namespace clothbench {
+namespace {
+
+// one closed body of several spheres (separate components) of radius r at `centres`
+BodyFrame spheres(const std::vector<Vec3>& centres, Real r) {
+  BodyFrame all;
+  std::vector<BodyFrame> parts;
+  Eigen::Index nv = 0, nt = 0;
+  for (const Vec3& c : centres) {
+    parts.push_back(make_sphere_body(c, r, 48, 96));
+    nv += parts.back().vertex_count(), nt += parts.back().triangle_count();
+  }
+  all.positions.resize(3, nv), all.triangles.resize(3, nt);
+  Eigen::Index v = 0, t = 0;
+  for (const BodyFrame& p : parts) {
+    all.positions.middleCols(v, p.vertex_count()) = p.positions;
+    all.triangles.middleCols(t, p.triangle_count()) = p.triangles.array() + static_cast<int>(v);
+    v += p.vertex_count(), t += p.triangle_count();
+  }
+  finish_static_body(all);
+  return all;
+}
+
+// two spheres one behind the other: the front view's layers are the four surfaces along the line
+TEST(ImageSpaceLayers, PeeledMapsListEverySurfaceAlongTheLine) {
+  const Real r = 0.15f;
+  const BodyFrame body = spheres({Vec3(0, 0.5f, 0.2f), Vec3(0, 0.5f, -0.2f)}, r);
+  ColliderOptions o;
+  o.layers = 5;
+  o.side_layer = false;
+  for (const char* renderer : {"cpu", "gl"}) {
+    if (std::string(renderer) == "gl" && !test::gl_unavailable().empty()) continue;
+    const MapSet m = render_maps(body, renderer, o);
+    const MapFrame& f = m.frame;
+    ASSERT_EQ(f.map_count(), 2 + 4);
+    ASSERT_EQ(m.z.size(), 6 * m.view_pixels());
+    // the pixel whose centre is nearest the spheres' axis
+    const int col = static_cast<int>(f.front_u(0)), row = static_cast<int>(f.map_v(0.5f));
+    const Real expect[] = {0.35f, 0.05f, -0.05f, -0.35f};
+    for (int layer = 1; layer <= 4; ++layer) {
+      const std::size_t i = m.index(f.peel_map(MapSet::kFront, layer), col, row);
+      ASSERT_EQ(m.mask[i], MapSet::kBody) << renderer << " layer " << layer;
+      EXPECT_NEAR(m.z[i], expect[layer - 1], 0.002f) << renderer << " layer " << layer;
+      EXPECT_EQ(f.view_of(f.peel_map(MapSet::kFront, layer)), MapSet::kFront);
+      EXPECT_EQ(f.layer_of(f.peel_map(MapSet::kFront, layer)), layer);
+    }
+    // nothing beyond the fourth surface
+    EXPECT_EQ(m.mask[m.index(f.peel_map(MapSet::kFront, 5), col, row)], MapSet::kEmpty) << renderer;
+  }
+}
+
+// an "arm" sphere beside a "torso" one, with spheres in front of it, behind it, above and below it:
+// a point 2 mm inside the arm next to the side facing the torso is hidden from every camera (along X
+// by the torso and the arm's outer side, along Y and Z by the other spheres). The papers' single
+// surface per view answers it by the arm's outer side, 23 cm away; peeled layers by the side it is
+// nearest to, along -X
+TEST(ImageSpaceLayers, APointHiddenFromEveryCameraIsAnsweredByTheSurfaceItIsNearest) {
+  const Real r = 0.12f, d = 0.26f;
+  const Vec3 arm(0.3f, 0.5f, 0.0f);
+  const BodyFrame body = spheres(
+      {Vec3(0.0f, 0.5f, 0.0f), arm, arm + Vec3(0, 0, d), arm - Vec3(0, 0, d), arm + Vec3(0, d, 0), arm - Vec3(0, d, 0)},
+      r);
+  const Vec3 p = arm - Vec3(r - 0.002f, 0, 0);
+  for (int layers : {1, 3}) {
+    ColliderOptions o;
+    o.views = 6;
+    o.layers = layers;
+    o.fit_extent = true;  // the papers' square (side = body height) would not hold every sphere
+    auto c = make_is_cpu_collider(o);
+    c->set_body(body);
+    Points3 q(3, 1);
+    q.col(0) = p;
+    Contact k;
+    c->query(PointsView(q), ContactsOut{&k, 1});
+    std::cout << "[ layers ] " << layers << ": depth " << 1e3 * k.depth << " mm (exact -2 mm), normal ("
+              << k.normal.transpose() << ")\n";
+    ASSERT_TRUE(k.hit) << layers;
+    if (layers == 1) {
+      EXPECT_LT(k.depth, -0.1f);
+      EXPECT_GT(k.normal.x(), 0.9f);  // pushed out through the outer side
+    } else {
+      EXPECT_NEAR(k.depth, -0.002f, 0.001f);
+      EXPECT_LT(k.normal.x(), -0.95f);
+    }
+  }
+}
+
+// a point in the gap between two parts that every camera sees covered (a body on both sides along
+// each axis) is outside with layers, inside the visual hull without
+TEST(ImageSpaceLayers, AGapEveryCameraSeesCoveredIsOutsideWithLayers) {
+  const Real r = 0.12f;
+  // a ring of four spheres around the point in the x-z plane, and one above and below it
+  const Vec3 p(0.0f, 0.5f, 0.0f);
+  const Real d = 0.16f;
+  const BodyFrame body = spheres({p + Vec3(d, 0, 0), p - Vec3(d, 0, 0), p + Vec3(0, 0, d), p - Vec3(0, 0, d),
+                                  p + Vec3(0, d, 0), p - Vec3(0, d, 0)},
+                                 r);
+  for (int layers : {1, 3}) {
+    ColliderOptions o;
+    o.views = 6;
+    o.layers = layers;
+    o.fit_extent = true;
+    auto c = make_is_cpu_collider(o);
+    c->set_body(body);
+    Points3 q(3, 1);
+    q.col(0) = p;
+    Contact k;
+    c->query(PointsView(q), ContactsOut{&k, 1});
+    EXPECT_EQ(k.hit, layers == 1) << layers << " layers, depth " << k.depth;
+  }
+}
+
+TEST(GlMaps, SameAsCpuWithPeeledLayers) {
+  CLOTHBENCH_REQUIRE_GL();
+  const BodyModel& model = test::test_body_model();
+  for (int views : {2, 6}) {
+    ColliderOptions o;
+    o.views = views;
+    o.layers = 4;
+    o.side_layer = false;
+    const MapSet gl = render_maps(model.rest(), "gl", o), cpu = render_maps(model.rest(), "cpu", o);
+    ASSERT_EQ(gl.z.size(), cpu.z.size());
+    long covered = 0, coverage_mismatch = 0, identical = 0;
+    double worst = 0;
+    for (std::size_t i = 0; i < gl.z.size(); ++i) {
+      const bool a = gl.mask[i] != MapSet::kEmpty, b = cpu.mask[i] != MapSet::kEmpty;
+      coverage_mismatch += a != b;
+      if (!a || !b) continue;
+      ++covered;
+      identical += gl.z[i] == cpu.z[i];
+      worst = std::max(worst, std::abs(double(gl.z[i]) - double(cpu.z[i])));
+    }
+    std::cout << "[ layers ] " << views << " views, 4 layers: covered " << covered << ", coverage mismatches "
+              << coverage_mismatch << ", depth bit-identical on " << 100.0 * double(identical) / double(covered)
+              << " %, max " << worst * 1e6 << " um\n";
+    EXPECT_EQ(coverage_mismatch, 0);
+    EXPECT_LT(worst, 10e-6);
+    EXPECT_GE(double(identical) / double(covered), 0.999);
+  }
+}
+
+TEST(ImageSpaceLayers, BadLayerCountsAreRejected) {
+  for (int layers : {0, -1, 9}) {
+    ColliderOptions o;
+    o.layers = layers;
+    try {
+      make_is_cpu_collider(o);
+      ADD_FAILURE() << layers << " layers accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("layers must be 1"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace clothbench
