@@ -1,6 +1,7 @@
 #include "clothbench/collide_is/image_space_collider.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -91,36 +92,51 @@ struct PairAnswer {
   bool outside() const { return depth > 0 || side; }
 };
 
-// With peeled layers the line through the pixel lists where it enters and leaves the body: layer 1
-// (the front view's surface, largest coordinate) enters, layer 2 leaves, layer 3 enters again, ... A
-// point below layer 1 is inside between an entering layer and the next, outside in a gap between a
-// leaving layer and the next (depth > 0: the nearer of the two); its depth and map are the nearer
-// layer's. The pair's answer stands where the layers cannot say: an odd count of surfaces on a line
-// the peeling saw whole (a grazing line), or below the last layer kept when there may be more.
+// With peeled layers the line through the pixel lists where it crosses the body's surface: layer 1
+// (the front view's surface, largest coordinate), layer 2, ... Each crossing enters the body where its
+// normal faces the front camera and leaves it otherwise; counting them (the winding number along the
+// line, never below 0) gives where the line is inside the union of the body's parts, which a skinned
+// body's overlapping parts (an arm pressed into the torso) make differ from alternating in and out. A
+// point below layer 1 is inside between a crossing into the union and the next crossing out of it,
+// outside in a gap between a crossing out and the next crossing in (depth > 0); its depth and map are
+// the nearer of the two. The pair's answer stands where the layers cannot say: below the last
+// surface of a line the peeling saw whole, or below the last layer kept when there may be more
+// (then, as the pair: inside between the last crossing into the union, or the last layer, and the back view).
 void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAnswer& a) {
   const MapFrame& f = m.frame;
-  Real above = m.z[element(m, front, col, row)];
-  int above_map = front;
-  for (int layer = 2; layer <= f.layers; ++layer) {
+  const int axis = MapFrame::view_axis(front);
+  struct Crossing {
+    Real z;
+    int map;
+  };
+  std::array<Crossing, 8> union_crossings{};  // into the union, out of it, into it, ...
+  int crossings = 0, winding = 0;
+  Crossing last{};
+  for (int layer = 1; layer <= f.layers; ++layer) {
     const int map = f.peel_map(front, layer);
     const std::size_t i = element(m, map, col, row);
-    // the line's surfaces end above x: below the last (leaving) one the back view answers, as it
-    // does for an odd count (a grazing line)
-    if (m.mask[i] != MapSet::kBody) return;
-    const Real below = m.z[i];
-    if (x >= below) {
-      const bool inside = layer % 2 == 0;  // between an entering layer (odd) and a leaving one
-      const Real to_above = above - x, to_below = x - below;
-      a.depth = inside ? -std::min(to_above, to_below) : std::min(to_above, to_below);
-      a.map = to_above <= to_below ? above_map : map;
-      return;
-    }
-    above = below, above_map = map;
+    if (m.mask[i] != MapSet::kBody) break;
+    last = {m.z[i], map};
+    const bool enters = layer == 1 || m.raw_normal_at(i)[axis] > 0;
+    const int before = winding;
+    winding = std::max(0, winding + (enters ? 1 : -1));
+    if ((before == 0) != (winding == 0)) union_crossings[crossings++] = last;
   }
-  // more surfaces may follow the last layer kept: between it and the back view, the pair's answer
+  for (int k = 1; k < crossings; ++k) {
+    if (x < union_crossings[k].z) continue;
+    const Crossing& above = union_crossings[k - 1];
+    const Crossing& below = union_crossings[k];
+    const Real to_above = above.z - x, to_below = x - below.z;
+    a.depth = k % 2 == 1 ? -std::min(to_above, to_below) : std::min(to_above, to_below);
+    a.map = to_above <= to_below ? above.map : below.map;
+    return;
+  }
+  const bool whole = f.layers == 1 || m.mask[element(m, f.peel_map(front, f.layers), col, row)] != MapSet::kBody;
+  if (whole) return;
+  const Crossing above = winding > 0 ? union_crossings[crossings - 1] : last;
   const Real d_back = m.z[element(m, front + 1, col, row)] - x;
-  a.depth = std::max(x - above, d_back);
-  a.map = x - above >= d_back ? above_map : front + 1;
+  a.depth = std::max(x - above.z, d_back);
+  a.map = x - above.z >= d_back ? above.map : front + 1;
 }
 
 // dressing Eq. 5/9, walking Eq. 11/12 along the pair's axis; false when p is outside its image (the pair a

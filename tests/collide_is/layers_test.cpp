@@ -123,6 +123,26 @@ TEST(ImageSpaceLayers, AGapEveryCameraSeesCoveredIsOutsideWithLayers) {
   }
 }
 
+// two overlapping spheres (an arm pressed into the torso, as skinning makes them): along X the line
+// enters one, enters the other, leaves the first and leaves the second; a point where they overlap is
+// inside both, which alternating in and out along the line would call a gap
+TEST(ImageSpaceLayers, WhereTwoPartsOverlapThePointIsInside) {
+  const Real r = 0.12f;
+  const BodyFrame body = spheres({Vec3(0.0f, 0.5f, 0.0f), Vec3(0.2f, 0.5f, 0.0f)}, r);
+  ColliderOptions o;
+  o.views = 6;
+  o.layers = 4;
+  o.fit_extent = true;
+  auto c = make_is_cpu_collider(o);
+  c->set_body(body);
+  Points3 q(3, 1);
+  q.col(0) = Vec3(0.1f, 0.5f, 0.0f);
+  Contact k;
+  c->query(PointsView(q), ContactsOut{&k, 1});
+  EXPECT_TRUE(k.hit);
+  EXPECT_LT(k.depth, -0.02f);  // 66 mm from the union's surface (the circle where the spheres meet)
+}
+
 TEST(GlMaps, SameAsCpuWithPeeledLayers) {
   CLOTHBENCH_REQUIRE_GL();
   const BodyModel& model = test::test_body_model();
