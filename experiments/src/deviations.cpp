@@ -54,6 +54,11 @@ const std::vector<Deviation>& deviations() {
        {"collider.views=2"},
        false,
        true},
+      {"image space on the walking body: three surfaces peeled along each pair's axis (collider.layers = 3)",
+       "the nearest surface per camera only (dressing section 5, walking section 4)",
+       {"collider.layers=1"},
+       false,
+       true},
       {"stretch limit: the relative velocity along an over-stretched spring kept at what ends the step at the "
        "threshold "
        "(walking Eq. 5 averaging; directional in the papers' regime)",

@@ -48,7 +48,9 @@ enum class ViewRule {
 ///   normal and velocity from the map whose surface is nearer (z beyond the local body centre
 ///   (zf + zb) / 2 takes the front map, the papers' choice by the sign of z).
 /// Side-layer hits (dressing 5.4) report depth >= 0. Depth test kTangentPlane. With
-/// options.views 4 or 6 the pairs along X and Y answer too, combined by ViewRule::kHull. Throws
+/// options.views 4 or 6 the pairs along X and Y answer too, combined by ViewRule::kHull; with
+/// options.layers > 1 each pair answers from the surfaces peeled along its axis (inside where the
+/// line's crossings, counted by their facing, say so; depth to the nearer crossing). Throws
 /// std::runtime_error when no GL context can be created or the build lacks CLOTHBENCH_WITH_GL.
 std::unique_ptr<Collider> make_is_gl_collider(const ColliderOptions& options);
 
@@ -60,7 +62,7 @@ std::unique_ptr<Collider> make_is_cpu_collider(const ColliderOptions& options);
 class ImageSpaceCollider final : public Collider {
  public:
   /// `setup_ms`: set-up already spent on the renderer (GL context, shaders) [ms].
-  /// Throws std::invalid_argument for no renderer, max_speed <= 0 or bad views / side_layer_mm.
+  /// Throws std::invalid_argument for no renderer, max_speed <= 0 or bad views / layers / side_layer_mm.
   ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, const ColliderOptions& options, double setup_ms,
                      DepthTest test = DepthTest::kTangentPlane, ViewRule rule = ViewRule::kHull);
   std::string_view name() const override;

@@ -26,7 +26,7 @@ inline std::string regime_suffix(const std::string& regime, const std::string& s
 /// "ours" run our default (the tangent-plane refinement on float maps). Empty for any other collider.
 inline std::vector<std::string> papers_image_space(const std::string& collider) {
   if (collider.rfind("is-", 0) != 0) return {};
-  return {"collider.tangent_plane=false", "collider.float_maps=false"};
+  return {"collider.tangent_plane=false", "collider.float_maps=false", "collider.layers=1"};
 }
 
 /// Issue 20: the paper tables' default for every collider: image space as papers_image_space, and the object-space
