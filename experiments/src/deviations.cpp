@@ -54,7 +54,7 @@ const std::vector<Deviation>& deviations() {
        {"collider.views=2"},
        false,
        true},
-      {"image space on the walking body: three surfaces peeled along each pair's axis (collider.layers = 3)",
+      {"image space on the walking body: five surfaces peeled along each pair's axis (collider.layers = 5)",
        "the nearest surface per camera only (dressing section 5, walking section 4)",
        {"collider.layers=1"},
        false,

@@ -34,6 +34,22 @@ BodyFrame spheres(const std::vector<Vec3>& centres, Real r) {
   return all;
 }
 
+// the is-cpu answer at one point, with 6 views and `layers`, the square fitted to the body (the papers'
+// square, side = body height, would not hold the spheres spread along X)
+Contact answer(const BodyFrame& body, int layers, const Vec3& p) {
+  ColliderOptions o;
+  o.views = 6;
+  o.layers = layers;
+  o.fit_extent = true;
+  auto c = make_is_cpu_collider(o);
+  c->set_body(body);
+  Points3 q(3, 1);
+  q.col(0) = p;
+  Contact k;
+  c->query(PointsView(q), ContactsOut{&k, 1});
+  return k;
+}
+
 // two spheres one behind the other: the front view's layers are the four surfaces along the line
 TEST(ImageSpaceLayers, PeeledMapsListEverySurfaceAlongTheLine) {
   const Real r = 0.15f;
@@ -75,16 +91,7 @@ TEST(ImageSpaceLayers, APointHiddenFromEveryCameraIsAnsweredByTheSurfaceItIsNear
       r);
   const Vec3 p = arm - Vec3(r - 0.002f, 0, 0);
   for (int layers : {1, 3}) {
-    ColliderOptions o;
-    o.views = 6;
-    o.layers = layers;
-    o.fit_extent = true;  // the papers' square (side = body height) would not hold every sphere
-    auto c = make_is_cpu_collider(o);
-    c->set_body(body);
-    Points3 q(3, 1);
-    q.col(0) = p;
-    Contact k;
-    c->query(PointsView(q), ContactsOut{&k, 1});
+    const Contact k = answer(body, layers, p);
     std::cout << "[ layers ] " << layers << ": depth " << 1e3 * k.depth << " mm (exact -2 mm), normal ("
               << k.normal.transpose() << ")\n";
     ASSERT_TRUE(k.hit) << layers;
@@ -109,16 +116,7 @@ TEST(ImageSpaceLayers, AGapEveryCameraSeesCoveredIsOutsideWithLayers) {
                                   p + Vec3(0, d, 0), p - Vec3(0, d, 0)},
                                  r);
   for (int layers : {1, 3}) {
-    ColliderOptions o;
-    o.views = 6;
-    o.layers = layers;
-    o.fit_extent = true;
-    auto c = make_is_cpu_collider(o);
-    c->set_body(body);
-    Points3 q(3, 1);
-    q.col(0) = p;
-    Contact k;
-    c->query(PointsView(q), ContactsOut{&k, 1});
+    const Contact k = answer(body, layers, p);
     EXPECT_EQ(k.hit, layers == 1) << layers << " layers, depth " << k.depth;
   }
 }
@@ -129,16 +127,7 @@ TEST(ImageSpaceLayers, AGapEveryCameraSeesCoveredIsOutsideWithLayers) {
 TEST(ImageSpaceLayers, WhereTwoPartsOverlapThePointIsInside) {
   const Real r = 0.12f;
   const BodyFrame body = spheres({Vec3(0.0f, 0.5f, 0.0f), Vec3(0.2f, 0.5f, 0.0f)}, r);
-  ColliderOptions o;
-  o.views = 6;
-  o.layers = 4;
-  o.fit_extent = true;
-  auto c = make_is_cpu_collider(o);
-  c->set_body(body);
-  Points3 q(3, 1);
-  q.col(0) = Vec3(0.1f, 0.5f, 0.0f);
-  Contact k;
-  c->query(PointsView(q), ContactsOut{&k, 1});
+  const Contact k = answer(body, 4, Vec3(0.1f, 0.5f, 0.0f));
   EXPECT_TRUE(k.hit);
   EXPECT_LT(k.depth, -0.02f);  // 66 mm from the union's surface (the circle where the spheres meet)
 }
@@ -151,24 +140,7 @@ TEST(GlMaps, SameAsCpuWithPeeledLayers) {
     o.views = views;
     o.layers = 4;
     o.side_layer = false;
-    const MapSet gl = render_maps(model.rest(), "gl", o), cpu = render_maps(model.rest(), "cpu", o);
-    ASSERT_EQ(gl.z.size(), cpu.z.size());
-    long covered = 0, coverage_mismatch = 0, identical = 0;
-    double worst = 0;
-    for (std::size_t i = 0; i < gl.z.size(); ++i) {
-      const bool a = gl.mask[i] != MapSet::kEmpty, b = cpu.mask[i] != MapSet::kEmpty;
-      coverage_mismatch += a != b;
-      if (!a || !b) continue;
-      ++covered;
-      identical += gl.z[i] == cpu.z[i];
-      worst = std::max(worst, std::abs(double(gl.z[i]) - double(cpu.z[i])));
-    }
-    std::cout << "[ layers ] " << views << " views, 4 layers: covered " << covered << ", coverage mismatches "
-              << coverage_mismatch << ", depth bit-identical on " << 100.0 * double(identical) / double(covered)
-              << " %, max " << worst * 1e6 << " um\n";
-    EXPECT_EQ(coverage_mismatch, 0);
-    EXPECT_LT(worst, 10e-6);
-    EXPECT_GE(double(identical) / double(covered), 0.999);
+    test::expect_gl_matches_cpu(model.rest(), o, model.path().c_str());
   }
 }
 

@@ -111,30 +111,6 @@ TEST(ImageSpaceViews, ExtraViewsSeeTheSphereAlongTheirAxes) {
   EXPECT_GT(checked, 4 * 10000);
 }
 
-// GL and CPU agree for 4 and 6 views as for 2 (tests/collide_is/map_set_test.cpp, GlMaps)
-void expect_gl_matches_cpu(const BodyFrame& body, ColliderOptions o, const char* what) {
-  const MapSet gl = render_maps(body, "gl", o), cpu = render_maps(body, "cpu", o);
-  ASSERT_EQ(gl.z.size(), cpu.z.size());
-  ASSERT_EQ(gl.z.size(), static_cast<std::size_t>(gl.frame.map_count()) * gl.view_pixels());
-  long covered = 0, coverage_mismatch = 0, identical = 0;
-  double worst = 0;
-  for (std::size_t i = 0; i < gl.z.size(); ++i) {
-    const bool a = gl.mask[i] != MapSet::kEmpty, b = cpu.mask[i] != MapSet::kEmpty;
-    coverage_mismatch += a != b;
-    if (!a || !b) continue;
-    ++covered;
-    identical += gl.z[i] == cpu.z[i];
-    worst = std::max(worst, std::abs(double(gl.z[i]) - double(cpu.z[i])));
-  }
-  std::cout << "[ views ] " << what << " " << o.views << " views " << o.map_size << "^2: covered " << covered
-            << ", coverage mismatches " << coverage_mismatch << ", depth bit-identical on "
-            << 100.0 * double(identical) / double(covered) << " %, max " << worst * 1e6 << " um\n";
-  EXPECT_GT(covered, 1000 * o.views);
-  EXPECT_EQ(coverage_mismatch, 0);
-  EXPECT_LT(worst, 10e-6);
-  EXPECT_GE(double(identical) / double(covered), 0.999);
-}
-
 TEST(GlMaps, SameAsCpuWithFourAndSixViews) {
   CLOTHBENCH_REQUIRE_GL();
   const BodyModel& model = test::test_body_model();
@@ -142,10 +118,10 @@ TEST(GlMaps, SameAsCpuWithFourAndSixViews) {
     ColliderOptions o;
     o.views = views;
     o.side_layer = false;
-    expect_gl_matches_cpu(make_sphere_body(Vec3(0.01f, 0.4f, 0.02f), 0.25f), o, "sphere");
-    expect_gl_matches_cpu(model.rest(), o, model.path().c_str());
+    test::expect_gl_matches_cpu(make_sphere_body(Vec3(0.01f, 0.4f, 0.02f), 0.25f), o, "sphere");
+    test::expect_gl_matches_cpu(model.rest(), o, model.path().c_str());
     o.side_layer = true;  // the layer is added after rendering, the same way for both
-    expect_gl_matches_cpu(model.rest(), o, model.path().c_str());
+    test::expect_gl_matches_cpu(model.rest(), o, model.path().c_str());
   }
 }
 
