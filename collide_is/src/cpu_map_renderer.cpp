@@ -191,21 +191,20 @@ class CpuMapRenderer final : public MapRenderer {
     }
   }
 
-  // depth test (GL_LESS on the z-buffer) and attribute write at the target's pixel (col, row), `pixel`
-  // within the view. An even view with layers keeps its `layers` nearest surfaces in order, as depth
-  // peeling finds them (layer l: the nearest fragment beyond layer l - 1 + kPeelGap, the first drawn of equals)
-  void shade(MapSet& maps, int view, std::size_t pixel, int col, int row, const Planes& p) const {
-    // llvmpipe's interpolation (lp_bld_interp): z_origin + dzdx col, then + dzdy row, clamped to [0, 1]
-    const float x = static_cast<float>(col), y = static_cast<float>(row);
-    const float zbuf = std::clamp(mul_add(fused_, p.dzdy, y, mul_add(fused_, p.dzdx, x, p.z_origin)), 0.0f, 1.0f);
+  static constexpr std::size_t kNoSlot = ~std::size_t(0);
+
+  // the element a fragment at `zbuf` takes among an even view's layers at `pixel`, the deeper ones moved down
+  // (kNoSlot: none). The layers keep the nearest distinct depths in order, as depth peeling finds them
+  // (layer l: the nearest fragment beyond layer l - 1 + kPeelGap, the first drawn of equals)
+  static std::size_t peel_slot(MapSet& maps, int view, std::size_t pixel, float zbuf) {
     const MapFrame& f = maps.frame;
-    const int layers = view % 2 == 0 ? f.layers : 1;
+    const int layers = f.layers;
     const auto element = [&](int layer) { return f.peel_map(view, layer) * maps.view_pixels() + pixel; };
     const auto depth = [&](int layer) { return maps.z[element(layer)]; };
     int slot = 1;
     while (slot <= layers && !(zbuf < depth(slot))) ++slot;
     // beyond every layer kept, or not beyond the layer above by the peeling gap
-    if (slot > layers || (slot > 1 && zbuf <= depth(slot - 1) + kPeelGap)) return;
+    if (slot > layers || (slot > 1 && zbuf <= depth(slot - 1) + kPeelGap)) return kNoSlot;
     // layers the new one hides (within the gap beyond it) go; else the deeper ones move down one
     int hidden = 0;
     while (slot + hidden <= layers && depth(slot + hidden) <= zbuf + kPeelGap) ++hidden;
@@ -216,7 +215,22 @@ class CpuMapRenderer final : public MapRenderer {
         maps.copy_element(element(layer + hidden - 1), element(layer));
       for (int layer = layers - hidden + 2; layer <= layers; ++layer) maps.z[element(layer)] = 1.0f;
     }
-    const std::size_t i = element(slot);
+    return element(slot);
+  }
+
+  // depth test (GL_LESS on the z-buffer) and attribute write at the target's pixel (col, row), `pixel`
+  // within the view; an even view with layers keeps several (peel_slot)
+  void shade(MapSet& maps, int view, std::size_t pixel, int col, int row, const Planes& p) const {
+    // llvmpipe's interpolation (lp_bld_interp): z_origin + dzdx col, then + dzdy row, clamped to [0, 1]
+    const float x = static_cast<float>(col), y = static_cast<float>(row);
+    const float zbuf = std::clamp(mul_add(fused_, p.dzdy, y, mul_add(fused_, p.dzdx, x, p.z_origin)), 0.0f, 1.0f);
+    std::size_t i = static_cast<std::size_t>(view) * maps.view_pixels() + pixel;
+    if (view % 2 == 0 && maps.frame.layers > 1) {
+      i = peel_slot(maps, view, pixel, zbuf);
+      if (i == kNoSlot) return;
+    } else if (!(zbuf < maps.z[i])) {
+      return;
+    }
     maps.z[i] = zbuf;
     const float dx = x + 0.5f - p.x0, dy = y + 0.5f - p.y0;
     Attributes nv;

@@ -203,25 +203,27 @@ void depth_from_zbuffer(MapSet& maps) {
   const MapFrame& f = maps.frame;
   const std::size_t n = maps.view_pixels();
   const float inf = std::numeric_limits<float>::infinity();
-  for (std::size_t i = 0; i < maps.z.size(); ++i) {
-    const float zbuf = maps.z[i];
-    const int view = f.view_of(static_cast<int>(i / n));
+  for (int map = 0; map < f.map_count(); ++map) {
+    const int view = f.view_of(map);
     const bool front = view % 2 == 0;
-    // nothing drawn: the comparison of Eq. 9 must fail there
-    if (zbuf >= 1.0f) {
-      maps.z[i] = front ? -inf : inf;
-      maps.mask[i] = MapSet::kEmpty;
-      continue;
-    }
     // dressing Eq. 5: z-buffer to geometry space (along the view's axis for the extra views)
     const int axis = MapFrame::view_axis(view);
     const Real lo = f.plane_min(axis), hi = f.plane_max(axis);
-    if (view < 2) {
-      maps.z[i] = front ? f.z_max - zbuf * f.depth_range() : f.z_min + zbuf * f.depth_range();
-    } else {
-      maps.z[i] = front ? hi - zbuf * (hi - lo) : lo + zbuf * (hi - lo);
+    for (std::size_t i = static_cast<std::size_t>(map) * n; i < static_cast<std::size_t>(map + 1) * n; ++i) {
+      const float zbuf = maps.z[i];
+      // nothing drawn: the comparison of Eq. 9 must fail there
+      if (zbuf >= 1.0f) {
+        maps.z[i] = front ? -inf : inf;
+        maps.mask[i] = MapSet::kEmpty;
+        continue;
+      }
+      if (view < 2) {
+        maps.z[i] = front ? f.z_max - zbuf * f.depth_range() : f.z_min + zbuf * f.depth_range();
+      } else {
+        maps.z[i] = front ? hi - zbuf * (hi - lo) : lo + zbuf * (hi - lo);
+      }
+      maps.mask[i] = MapSet::kBody;
     }
-    maps.mask[i] = MapSet::kBody;
   }
 }
 
