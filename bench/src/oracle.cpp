@@ -179,14 +179,15 @@ Accuracy Oracle::measure(PointsView points) const {
   std::vector<double> pen;
   pen.reserve(depth.size());
   double sum = 0;
-  for (const Real d : depth) {
+  for (std::size_t k = 0; k < depth.size(); ++k) {
+    const Real d = depth[k];
     if (!std::isfinite(d)) continue;
     const double p = d < 0 ? -1000.0 * double(d) : 0.0;
     pen.push_back(p);
     if (d < 0) {
       ++a.inside;
       sum += p;
-      a.depth_max_mm = std::max(a.depth_max_mm, p);
+      if (p > a.depth_max_mm) a.depth_max_mm = p, a.deepest = static_cast<long>(k);
     }
   }
   a.points = pen.size();

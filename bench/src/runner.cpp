@@ -366,12 +366,8 @@ void measure_frame(const BodyFrame& frame, const Simulator& sim, double t, RunRe
   Accuracy a = oracle.measure(sim.positions());
   oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
   const StrainStats strain = sim.strain();
-  if (a.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm)) {
-    std::vector<Real> sd;
-    oracle.signed_distance(sim.positions(), sd);
-    const auto deepest = std::min_element(sd.begin(), sd.end(), [](Real x, Real y) { return x < y || y != y; });
-    r.depth_max_where = describe_vertex(sim, int(deepest - sd.begin()), -1e3 * double(*deepest), t);
-  }
+  if (a.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm))
+    r.depth_max_where = describe_vertex(sim, static_cast<int>(a.deepest), a.depth_max_mm, t);
   r.frame_samples.push_back({t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});
 }
 

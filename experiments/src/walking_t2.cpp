@@ -265,9 +265,8 @@ void walking_t2(ExperimentContext& ctx) {
       "caught between is pushed the wrong way (the ablation row runs the papers' image space whole: the front/back "
       "pair, one surface per camera, the z comparison of walking Eq. 12 on 8-bit maps); and each pair peels five "
       "surfaces along its axis (`collider.layers = 5`, depth peeling; with the far camera's nearest one, the six a "
-      "line "
-      "through both arms and the torso crosses): with one surface per camera the six views "
-      "make a visual hull, and a sleeve point inside the arm next to the armpit, hidden from the side cameras by the "
+      "line through both arms and the torso crosses): with one surface per camera the six views make a visual "
+      "hull, and a sleeve point inside the arm next to the armpit, hidden from the side cameras by the "
       "torso and the other arm and from the rest by the arm itself, was answered by the arm's front or back 2-3 cm "
       "away and stayed 9-13 mm inside. Each of these has an ablation row (is-cpu, walk_07_01), and "
       "\"travelling\" keeps the root's motion (the maps follow the body).\n\n" +

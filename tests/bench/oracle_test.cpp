@@ -240,6 +240,7 @@ TEST(Oracle, KnownDepthsGiveTheirStatistics) {
   EXPECT_EQ(a.inside, 5u);
   EXPECT_NEAR(a.inside_pct, 25.0, 1e-9);
   EXPECT_NEAR(a.depth_max_mm, 5.0, 1e-3);
+  EXPECT_EQ(a.deepest, 4);  // the point 5 mm inside
   EXPECT_NEAR(a.depth_mean_mm, 3.0, 1e-3);
   EXPECT_NEAR(a.depth_p95_mm, 4.0, 1e-3);  // nearest rank 19 of 20: fifteen zeros, then 1..5
 }
@@ -252,6 +253,7 @@ TEST(Oracle, FewInsideGiveZeroPercentileAndMovesWithTheBody) {
   Accuracy a = oracle.measure(points);
   EXPECT_EQ(a.inside, 1u);
   EXPECT_NEAR(a.depth_max_mm, 3.0, 1e-3);
+  EXPECT_EQ(a.deepest, 0);
   EXPECT_EQ(a.depth_p95_mm, 0.0);
   // the body moves 1 cm outward along +x: points on the +x side end up inside
   BodyFrame moved = capsule();

@@ -24,6 +24,7 @@ namespace clothbench {
 struct Accuracy {
   double inside_pct = 0;         ///< share of points inside the body [%]
   double depth_max_mm = 0;       ///< deepest penetration, positive [mm]; 0 if none inside
+  long deepest = -1;             ///< index of the deepest point among those measured; -1 if none inside
   double depth_mean_mm = 0;      ///< mean penetration over the inside points [mm]; 0 if none
   double depth_p95_mm = 0;       ///< 95th percentile of penetration over all points [mm]; 0 when < 5 % inside
   std::size_t points = 0;        ///< finite points measured (non-finite points are skipped)
