@@ -154,21 +154,12 @@ class CpuMapRenderer final : public MapRenderer {
     return true;
   }
 
-  // rasterises one triangle into one view: coverage, depth test, attributes
+  // rasterises one triangle into one view: coverage, depth test, attributes (the planes are set up at the first
+  // sample covered: most of a fine body's triangles cover none in most views)
   void draw(MapSet& maps, int view, std::array<WindowVertex, 3> w, std::array<Attributes, 3> a) const {
     // zero snapped area draws nothing
     const std::int64_t area = edge(w[0], w[1], w[2].fx, w[2].fy);
     if (area == 0) return;
-    // depth in llvmpipe's vertex order: a counter-clockwise triangle (y up) has its first two
-    // vertices swapped (lp_setup_tri, provoking vertex last)
-    Planes p;
-    if (!depth_plane(area > 0 ? std::array<WindowVertex, 3>{w[1], w[0], w[2]} : w, p)) return;
-    // coverage and attributes counter-clockwise
-    if (area < 0) {
-      std::swap(w[1], w[2]);
-      std::swap(a[1], a[2]);
-    }
-    if (!attribute_planes(w, a, p)) return;
     // integer sample range of the snapped bounding box, clipped to this view's rows of the target
     const int n = maps.frame.size, row_offset = view * n;
     const auto lo = [](std::int64_t v) { return static_cast<int>(-((-v) >> kSubpixelBits)); };
@@ -177,15 +168,31 @@ class CpuMapRenderer final : public MapRenderer {
     const int c1 = std::min(n - 1, hi(std::max({w[0].fx, w[1].fx, w[2].fx})));
     const int r0 = std::max(row_offset, lo(std::min({w[0].fy, w[1].fy, w[2].fy})));
     const int r1 = std::min(row_offset + n - 1, hi(std::max({w[0].fy, w[1].fy, w[2].fy})));
+    if (c0 > c1 || r0 > r1) return;
+    // depth in llvmpipe's vertex order: a counter-clockwise triangle (y up) has its first two
+    // vertices swapped (lp_setup_tri, provoking vertex last)
+    const std::array<WindowVertex, 3> depth_order = area > 0 ? std::array<WindowVertex, 3>{w[1], w[0], w[2]} : w;
+    // coverage and attributes counter-clockwise
+    if (area < 0) {
+      std::swap(w[1], w[2]);
+      std::swap(a[1], a[2]);
+    }
     const bool tie0 = owns_ties(w[1], w[2]), tie1 = owns_ties(w[2], w[0]), tie2 = owns_ties(w[0], w[1]);
+    // the edge functions step exactly (integers) from one sample to the next along a row
+    const std::int64_t step = std::int64_t(1) << kSubpixelBits;
+    const std::int64_t dx0 = -(w[2].fy - w[1].fy) * step, dx1 = -(w[0].fy - w[2].fy) * step,
+                       dx2 = -(w[1].fy - w[0].fy) * step;
+    Planes p;
+    bool planes = false;
     for (int row = r0; row <= r1; ++row) {
       const std::int64_t sy = static_cast<std::int64_t>(row) << kSubpixelBits;
-      for (int col = c0; col <= c1; ++col) {
-        const std::int64_t sx = static_cast<std::int64_t>(col) << kSubpixelBits;
+      const std::int64_t sx0 = static_cast<std::int64_t>(c0) << kSubpixelBits;
+      std::int64_t e0 = edge(w[1], w[2], sx0, sy), e1 = edge(w[2], w[0], sx0, sy), e2 = edge(w[0], w[1], sx0, sy);
+      for (int col = c0; col <= c1; ++col, e0 += dx0, e1 += dx1, e2 += dx2) {
         // inside all three edges, ties by the top-left rule
-        const std::int64_t e0 = edge(w[1], w[2], sx, sy), e1 = edge(w[2], w[0], sx, sy), e2 = edge(w[0], w[1], sx, sy);
         if (e0 < 0 || e1 < 0 || e2 < 0) continue;
         if ((e0 == 0 && !tie0) || (e1 == 0 && !tie1) || (e2 == 0 && !tie2)) continue;
+        if (!planes && !(planes = depth_plane(depth_order, p) && attribute_planes(w, a, p))) return;
         shade(maps, view, static_cast<std::size_t>(row - row_offset) * n + col, col, row, p);
       }
     }

@@ -142,17 +142,6 @@ Vec3 MapSet::velocity_at(std::size_t i) const {
   return max_speed * (Vec3(c[0], c[1], c[2]) * (2.0f / 255.0f) - Vec3::Ones());
 }
 
-void MapSet::copy_element(std::size_t from, std::size_t to) {
-  z[to] = z[from];
-  if (float_maps) {
-    std::copy_n(&normal[4 * from], 4, &normal[4 * to]);
-    if (has_velocity) std::copy_n(&velocity[4 * from], 4, &velocity[4 * to]);
-  } else {
-    std::copy_n(&normal8[4 * from], 4, &normal8[4 * to]);
-    if (has_velocity) std::copy_n(&velocity8[4 * from], 4, &velocity8[4 * to]);
-  }
-}
-
 namespace {
 
 // one ring of the layer in one view: every empty 8-neighbour of a `source` pixel joins ring `ring`

@@ -2,6 +2,7 @@
 /// Front and back depth, normal and velocity maps of a body (dressing paper section 5, walking
 /// paper section 4), the cameras that produce them, and the two renderers that draw them:
 /// OpenGL through OSMesa ("gl") and our CPU rasteriser ("cpu"), which give the same coverage.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -134,7 +135,16 @@ struct MapSet {
   /// Body velocity at element i [m/s] (walking Eq. 10 for 8-bit maps); zero without velocity maps.
   Vec3 velocity_at(std::size_t i) const;
   /// Copies depth, normal and velocity (not the mask) of element `from` to element `to`.
-  void copy_element(std::size_t from, std::size_t to);
+  void copy_element(std::size_t from, std::size_t to) {
+    z[to] = z[from];
+    if (float_maps) {
+      std::copy_n(&normal[4 * from], 4, &normal[4 * to]);
+      if (has_velocity) std::copy_n(&velocity[4 * from], 4, &velocity[4 * to]);
+    } else {
+      std::copy_n(&normal8[4 * from], 4, &normal8[4 * to]);
+      if (has_velocity) std::copy_n(&velocity8[4 * from], 4, &velocity8[4 * to]);
+    }
+  }
   /// Sizes every array for `frame` and the encoding, clearing z to +-inf and the mask to kEmpty.
   void reset(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv);
 };
