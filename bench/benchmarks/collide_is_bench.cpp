@@ -1,15 +1,21 @@
 // Image-space collider costs: map rendering per frame (both views, depth + normal + velocity) for
-// both renderers, both encodings and three map sizes, and the query cost per point.
+// every renderer (OpenGL through OSMesa, OpenGL through EGL, our CPU rasteriser), both encodings and three map
+// sizes, and the query cost per point.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <filesystem>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "clothbench/collide_is/image_space_collider.hpp"
+#include "clothbench/config.h"
+#ifdef CLOTHBENCH_WITH_EGL
+#include "clothbench/collide_is/egl_collider.hpp"
+#endif
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 
@@ -38,7 +44,13 @@ const BenchBody& bench_body() {
 }
 
 std::unique_ptr<MapRenderer> make_renderer(const std::string& name) {
-  return name == "gl" ? make_gl_map_renderer() : make_cpu_map_renderer();
+  if (name == "gl") return make_gl_map_renderer();
+#ifdef CLOTHBENCH_WITH_EGL
+  if (name == "egl") return make_egl_map_renderer();
+#else
+  if (name == "egl") throw std::runtime_error("is-egl: not built (configure with -DCLOTHBENCH_WITH_EGL=ON)");
+#endif
+  return make_cpu_map_renderer();
 }
 
 // one frame's maps as update_body renders them: reset, both views, side layer
@@ -59,6 +71,7 @@ void bm_render(benchmark::State& state, const std::string& renderer, bool float_
   state.counters["update_ms"] = s.update_ms / static_cast<double>(s.updates);
   state.counters["setup_ms"] = s.setup_ms;
   state.counters["body_triangles"] = bench_body().frame.triangle_count();
+  state.SetLabel(c->device());
 }
 
 // 10,000 points within 3 cm of the surface (fixed seed) queried in one batch
@@ -95,7 +108,7 @@ void bm_query(benchmark::State& state, bool float_maps, DepthTest test) {
 }
 
 void register_all() {
-  for (const std::string renderer : {"gl", "cpu"})
+  for (const std::string renderer : {"gl", "egl", "cpu"})
     for (const bool float_maps : {true, false})
       for (const int size : {320, 512, 1024})
         benchmark::RegisterBenchmark(

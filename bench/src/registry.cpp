@@ -9,6 +9,10 @@
 // the image-space colliders are built always (is-gl only with CLOTHBENCH_WITH_GL); each
 // object-space backend's header exists only when its module was configured (CMake option on)
 #include "clothbench/collide_is/image_space_collider.hpp"
+#if defined(CLOTHBENCH_WITH_EGL) && __has_include("clothbench/collide_is/egl_collider.hpp")
+#include "clothbench/collide_is/egl_collider.hpp"
+#define CLOTHBENCH_HAS_EGL 1
+#endif
 #if defined(CLOTHBENCH_WITH_FCL) && __has_include("clothbench/collide_os/fcl_collider.hpp")
 #include "clothbench/collide_os/fcl_collider.hpp"
 #define CLOTHBENCH_HAS_FCL 1
@@ -44,6 +48,17 @@ std::vector<Entry> entries() {
   e.push_back({{"is-gl", is_desc + "rendered with OpenGL (OSMesa)", true, "CLOTHBENCH_WITH_GL"}, make_is_gl_collider});
 #else
   e.push_back({{"is-gl", is_desc + "rendered with OpenGL (OSMesa)", false, "CLOTHBENCH_WITH_GL"}, {}});
+#endif
+#ifdef CLOTHBENCH_HAS_EGL
+  e.push_back(
+      {{"is-egl", is_desc + "rendered with OpenGL in a windowless EGL context (a GPU where the driver offers one)",
+        true, "CLOTHBENCH_WITH_EGL"},
+       make_is_egl_collider});
+#else
+  e.push_back(
+      {{"is-egl", is_desc + "rendered with OpenGL in a windowless EGL context (a GPU where the driver offers one)",
+        false, "CLOTHBENCH_WITH_EGL"},
+       {}});
 #endif
   e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", true, ""}, make_is_cpu_collider});
   const std::string fcl_desc = "object space: FCL kIOS tree, closest point per query (temporal coherence), refit";

@@ -184,6 +184,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"meets_limits", limit_misses(r).empty() ? 1 : 0}};
   set_times(row, r.ms_per_iteration(), r.cpu_ms_per_iteration());
   if (!r.config_hash.empty()) row["config_hash"] = r.config_hash;
+  if (!r.device.empty()) row["device"] = r.device;
   if (r.search_share > 0) row["search_share"] = r.search_share;
   if (r.frames > 0) {
     row["frames"] = r.frames;

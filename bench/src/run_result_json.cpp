@@ -31,7 +31,8 @@ void accuracy_fields(J& j, A& a, F&& f) {
 
 template <typename J, typename R, typename F>
 void run_fields(J& j, R& r, F&& f) {
-  f(j, "scene", r.scene), f(j, "collider", r.collider), f(j, "integrator", r.integrator), f(j, "regime", r.regime);
+  f(j, "scene", r.scene), f(j, "collider", r.collider), f(j, "device", r.device), f(j, "integrator", r.integrator);
+  f(j, "regime", r.regime);
   f(j, "config_hash", r.config_hash), f(j, "strain_threshold", r.strain_threshold);
   f(j, "iteration_budget", r.iteration_budget), f(j, "estimate_s", r.estimate_s), f(j, "vertices", r.vertices);
   f(j, "query_points", r.query_points), f(j, "body_triangles", r.body_triangles), f(j, "dt_s", r.dt_s);

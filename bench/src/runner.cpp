@@ -534,6 +534,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   r.divergence = sim->divergence();
   const CollideStats stats = collider->stats();
   r.threads = stats.threads;
+  r.device = collider->device();
   const std::int64_t points = stats.points - before.points, searches = stats.searches - before.searches;
   r.search_share = points > 0 ? double(searches) / double(points) : 0;
   r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&

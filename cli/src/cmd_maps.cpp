@@ -9,6 +9,9 @@
 
 #include "clothbench/collide_is/map_set.hpp"
 #include "clothbench/config.h"
+#ifdef CLOTHBENCH_WITH_EGL
+#include "clothbench/collide_is/egl_collider.hpp"
+#endif
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/errors.hpp"
 #include "clothbench/render/map_pictures.hpp"
@@ -34,13 +37,25 @@ struct MapsArgs {
   std::string png_dir;
 };
 
-int run_maps(const MapsArgs& a) {
+// the maps by renderer name; egl from its own library
+MapSet maps_of(const BodyFrame& frame, const std::string& renderer, const ColliderOptions& options) {
 #ifndef CLOTHBENCH_WITH_GL
-  if (a.renderer == "gl")
+  if (renderer == "gl")
     throw InputError(
         "maps --renderer gl: this build has no OpenGL renderer (configure with -DCLOTHBENCH_WITH_GL=ON); "
         "--renderer cpu draws the same maps");
 #endif
+  if (renderer != "egl") return render_maps(frame, renderer, options);
+#ifdef CLOTHBENCH_WITH_EGL
+  const auto egl = make_egl_map_renderer();
+  std::cout << "egl: " << egl->device() << "\n";
+  return render_maps(frame, *egl, options);
+#else
+  throw InputError("maps --renderer egl: this build has no EGL renderer (configure with -DCLOTHBENCH_WITH_EGL=ON)");
+#endif
+}
+
+int run_maps(const MapsArgs& a) {
   // the body at rest or at one instant of an animation
   const BodyModel model = load_body(a.body);
   BodyFrame frame = model.rest();
@@ -57,7 +72,7 @@ int run_maps(const MapsArgs& a) {
   ColliderOptions options;
   options.map_size = a.size;
   Stopwatch watch;
-  const MapSet m = render_maps(frame, a.renderer, options);
+  const MapSet m = maps_of(frame, a.renderer, options);
   long covered = 0, side = 0;
   for (const auto k : m.mask) {
     covered += k == MapSet::kBody;
@@ -82,8 +97,10 @@ void add_maps_command(CLI::App& app, Action& action) {
   cmd->add_option("--animation", args->animation, "animation name (default: the rest pose)");
   cmd->add_option("--at", args->at_s, "animation time [s]")->check(CLI::NonNegativeNumber);
   cmd->add_option("--renderer", args->renderer,
-                  std::string("gl (OSMesa; builds with CLOTHBENCH_WITH_GL) or cpu (default: ") + kDefaultRenderer + ")")
-      ->check(CLI::IsMember({"gl", "cpu"}));
+                  std::string("gl (OSMesa; builds with CLOTHBENCH_WITH_GL), egl (windowless EGL, a GPU where there is "
+                              "one; CLOTHBENCH_WITH_EGL) or cpu (default: ") +
+                      kDefaultRenderer + ")")
+      ->check(CLI::IsMember({"gl", "egl", "cpu"}));
   cmd->add_option("--size", args->size, "map size [pixels]")->check(CLI::Range(8, 8192));
   cmd->add_option("--png", args->png_dir, "output folder")->required();
   cmd->callback([&action, args] { action = [args] { return run_maps(*args); }; });

@@ -61,6 +61,7 @@ void print_spread(const std::vector<RunResult>& runs) {
 void print_summary(const RunArgs& a, const RunResult& r) {
   std::printf("%s / %s: %d vertices (%d query points), body %ld triangles\n", r.scene.c_str(), r.collider.c_str(),
               r.vertices, r.query_points, r.body_triangles);
+  if (!r.device.empty()) std::printf("  device: %s\n", r.device.c_str());
   print_config(a, r);
   std::printf("  %s\n", kDefinitions);
   std::printf("  %s, regime %s: dt %.3f ms (Eq. 4 bound %.3f ms, Gershgorin bound %.3f ms), set-up %.1f ms\n",

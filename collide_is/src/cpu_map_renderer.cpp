@@ -64,6 +64,7 @@ inline bool owns_ties(const WindowVertex& a, const WindowVertex& b) {
 class CpuMapRenderer final : public MapRenderer {
  public:
   std::string_view name() const override { return "cpu"; }
+  std::string device() const override { return "our CPU rasteriser"; }
 
   void render(const BodyFrame& body, MapSet& maps) override {
     // window coordinates and z-buffer depth of every view, as GL computes them

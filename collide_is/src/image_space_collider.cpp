@@ -20,7 +20,12 @@ ImageSpaceCollider::ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, co
   stats_.setup_ms = setup_ms;
 }
 
-std::string_view ImageSpaceCollider::name() const { return renderer_->name() == "gl" ? "is-gl" : "is-cpu"; }
+std::string_view ImageSpaceCollider::name() const {
+  const std::string_view r = renderer_->name();
+  return r == "gl" ? "is-gl" : r == "egl" ? "is-egl" : "is-cpu";
+}
+
+std::string ImageSpaceCollider::device() const { return renderer_->device(); }
 
 void ImageSpaceCollider::render(const BodyFrame& body) {
   // cameras on this frame's bounding box, velocity maps only for moving bodies
@@ -253,19 +258,20 @@ void ImageSpaceCollider::query(PointsView points, ContactsOut out) {
   stats_.degenerate += degenerate;
 }
 
-namespace {
-DepthTest depth_test(const ColliderOptions& o) { return o.tangent_plane ? DepthTest::kTangentPlane : DepthTest::kPapers; }
-}  // namespace
+DepthTest image_space_depth_test(const ColliderOptions& o) {
+  return o.tangent_plane ? DepthTest::kTangentPlane : DepthTest::kPapers;
+}
 
 std::unique_ptr<Collider> make_is_gl_collider(const ColliderOptions& options) {
   // context creation and shader compilation count as set-up
   Stopwatch watch;
   auto renderer = make_gl_map_renderer();
-  return std::make_unique<ImageSpaceCollider>(std::move(renderer), options, watch.ms(), depth_test(options));
+  return std::make_unique<ImageSpaceCollider>(std::move(renderer), options, watch.ms(),
+                                              image_space_depth_test(options));
 }
 
 std::unique_ptr<Collider> make_is_cpu_collider(const ColliderOptions& options) {
-  return std::make_unique<ImageSpaceCollider>(make_cpu_map_renderer(), options, 0.0, depth_test(options));
+  return std::make_unique<ImageSpaceCollider>(make_cpu_map_renderer(), options, 0.0, image_space_depth_test(options));
 }
 
 }  // namespace clothbench

@@ -224,11 +224,17 @@ MapSet render_maps(const BodyFrame& body, std::string_view renderer, const Colli
   } else if (renderer == "cpu") {
     r = make_cpu_map_renderer();
   } else {
-    throw std::invalid_argument("render_maps: unknown renderer '" + std::string(renderer) + "' (gl, cpu)");
+    throw std::invalid_argument("render_maps: unknown renderer '" + std::string(renderer) +
+                                "' (gl, cpu; egl through make_egl_map_renderer())");
   }
+  return render_maps(body, *r, options);
+}
+
+MapSet render_maps(const BodyFrame& body, MapRenderer& renderer, const ColliderOptions& options) {
+  validate_body(body, "render_maps");
   MapSet maps;
   maps.reset(make_map_frame(bounding_box(body.positions), options), options.float_maps, body.moving, options.max_speed);
-  r->render(body, maps);
+  renderer.render(body, maps);
   if (const int rings = side_layer_rings(options, maps.frame.pixel)) add_side_layer(maps, rings);
   return maps;
 }

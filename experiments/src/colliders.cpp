@@ -61,7 +61,7 @@ struct Variant {
 
 std::vector<Variant> variants(ExperimentContext& ctx) {
   std::vector<Variant> out;
-  for (const auto& c : ctx.colliders({"is-gl", "is-cpu", "vdb", "bbtree"})) out.push_back({c, c, true});
+  for (const auto& c : ctx.colliders({"is-gl", "is-egl", "is-cpu", "vdb", "bbtree"})) out.push_back({c, c, true});
   for (const auto& c : ctx.colliders({"embree", "fcl"})) {
     out.push_back({c, c + " (from scratch)", false});
     out.push_back({c, c, true});
@@ -164,6 +164,72 @@ std::string shirt_table(ExperimentContext& ctx, const std::vector<Variant>& list
   return out.str();
 }
 
+// table 3: the image-space maps per renderer and map size, on the walking body (a frame as update_body draws it)
+std::string renderer_table(ExperimentContext& ctx) {
+  const BodyModel model = load_body(data_path("body/mh_female_walk.glb"));
+  const int walk = model.animation_index("walk_07_01");
+  const BodyFrame a = model.frame(walk, 1.0, true), b = model.frame(walk, 1.0 + 1.0 / 30, true);
+  const int frames = ctx.quick() ? 2 : 20;
+  const std::vector<std::string> renderers = ctx.colliders({"is-gl", "is-egl", "is-cpu"});
+  struct Setting {
+    int size, views, layers;
+    bool floats;
+  };
+  std::vector<Setting> settings;
+  for (const int size : {320, 512, 1024})
+    for (const bool floats : {true, false}) settings.push_back({size, 2, 1, floats});
+  settings.push_back({320, 6, 5, true});  // the walking scenes' cube of views, five layers peeled
+  std::vector<std::string> header{"map size", "views x layers", "encoding"};
+  for (const auto& r : renderers) header.push_back(r + " [ms/frame]");
+  MarkdownTable t(header);
+  std::string devices;
+  bool software = true;  // every OpenGL renderer drew on the CPU (Mesa's llvmpipe)
+  for (const Setting& s : settings) {
+    std::vector<std::string> row{std::to_string(s.size) + "^2",
+                                 std::to_string(s.views) + " x " + std::to_string(s.layers),
+                                 s.floats ? "float" : "8-bit"};
+    for (const auto& name : renderers) {
+      ColliderOptions o;
+      o.map_size = s.size;
+      o.views = s.views;
+      o.layers = s.layers;
+      o.float_maps = s.floats;
+      auto c = make_collider(name, o);
+      c->set_body(a);  // the first frame compiles shaders: set-up
+      for (int k = 0; k < frames; ++k) c->update_body(k % 2 ? a : b);
+      const double ms = c->stats().update_ms / double(c->stats().updates);
+      row.push_back(num(ms, 2));
+      if (name != "is-cpu" && c->device().find("llvmpipe") == std::string::npos) software = false;
+      if (s.size == 320 && s.views == 2 && s.floats)
+        devices += "- `" + name + "`: " + (c->device().empty() ? "-" : c->device()) + "\n";
+      ctx.add_row({{"name", "colliders/maps/" + name + "/" + row[0] + "/" + std::to_string(s.views) + "x" +
+                                std::to_string(s.layers) + "/" + row[2]},
+                   {"run_type", "iteration"},
+                   {"iterations", frames},
+                   {"real_time", ms},
+                   {"time_unit", "ms"},
+                   {"device", c->device()}});
+    }
+    t.row(row);
+  }
+  std::ostringstream out;
+  out << "## Map renderers\n\nOne animation frame's maps as `update_body` draws them (depth, normal and velocity of "
+         "every view and peeled layer, read back, the side layer added), mean of "
+      << frames << " frames of the walking body (" << a.triangle_count()
+      << " triangles) moving between 1 s and 1 s + 1/30 of `walk_07_01`, per renderer: `is-gl` OpenGL in an OSMesa "
+         "context, `is-egl` the same shaders and FBO in a windowless EGL context (`EGL_EXT_platform_device`, else "
+         "Mesa's surfaceless platform), `is-cpu` our CPU rasteriser (the same coverage and depth as llvmpipe). "
+      << (software ? "**These timings were taken without a GPU**: EGL found only Mesa's software device, so `is-egl` "
+                     "draws with the same llvmpipe as `is-gl`, and the two give bit-identical maps "
+                     "(tests/collide_is/egl_test.cpp); on a machine with a GPU `is-egl` draws there (README.md, *On a "
+                     "GPU*). "
+                   : "`is-egl` drew on the GPU named below. ")
+      << "Devices:\n\n"
+      << devices << "\n"
+      << t.str();
+  return out.str();
+}
+
 void colliders(ExperimentContext& ctx) {
   const std::vector<Variant> list = variants(ctx);
   std::ostringstream body;
@@ -175,7 +241,9 @@ void colliders(ExperimentContext& ctx) {
           "`search_radius` (5 cm), an unbounded search for points inside the body's box with nothing within it. "
           "Embree builds a static body at quality HIGH (LOW and refittable once it moves); FCL uses a kIOS tree. "
           "`vdb` samples a narrow-band signed distance field (OpenVDB) of voxel `collider.voxel_size`.\n\n"
-       << body_table(ctx, list) << "\n" << shirt_table(ctx, list);
+       << body_table(ctx, list) << "\n"
+       << shirt_table(ctx, list) << "\n"
+       << renderer_table(ctx);
   ctx.write("colliders", "Colliders: costs and accuracy, coherence", body.str());
 }
 

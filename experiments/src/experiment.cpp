@@ -42,7 +42,7 @@ Scene scene_for(const std::string& scene, const std::string& collider, const std
 bool ExperimentContext::needs_opengl(const std::string& collider) {
   // a forked worker inherits this process's OSMesa state but not llvmpipe's rendering threads: once this process
   // has drawn (a picture, an is-gl map), OpenGL in the child waits forever for threads that are not there
-  return collider == "is-gl";
+  return collider == "is-gl" || collider == "is-egl";
 }
 
 void ExperimentContext::prefetch(const std::vector<Request>& requests) {

@@ -25,7 +25,8 @@ TEST(RunResultJson, TheEndStateTravelsOnlyWhenAsked) {
 TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   RunResult r;
   r.scene = "shirt";
-  r.collider = "is-cpu";
+  r.collider = "is-egl";
+  r.device = "EGL device 0 of 1: Mesa llvmpipe";
   r.regime = "papers";
   r.config_hash = "0123456789abcdef";
   r.vertices = 1817;

@@ -315,6 +315,20 @@ class ImageSpaceAccuracy : public ::testing::Test {
     EXPECT_GE(within5, min_within5);
     return r;
   }
+  // an OpenGL collider (is-gl, is-egl) against exact geometry, and against is-cpu: the same maps, the same answers
+  static void expect_opengl_accurate(Collider& gl) {
+    const Report a = expect_accurate(gl, "float maps");
+    auto cpu = make_is_cpu_collider(ColliderOptions{});
+    const Report b = evaluate(*cpu, *body_, *sample_, *silhouette_, tol_);
+    long differ = 0;
+    for (std::size_t i = 0; i < a.contacts.size(); ++i) differ += a.contacts[i].hit != b.contacts[i].hit;
+    std::cout << "[ " << gl.name() << " ] hit differs from is-cpu on " << differ << " of " << a.contacts.size()
+              << " points\n";
+    EXPECT_LE(differ, 2);
+    const CollideStats st = gl.stats();
+    EXPECT_GT(st.setup_ms, 0);
+    EXPECT_EQ(st.points, static_cast<std::int64_t>(a.contacts.size()));
+  }
   static constexpr Real tol_ = ColliderOptions{}.tol;
   static const BodyFrame* body_;
   static Sample* sample_;
@@ -350,18 +364,16 @@ TEST_F(ImageSpaceAccuracy, EightBitMapsAgreeWithExactGeometry) {
 TEST_F(ImageSpaceAccuracy, GlMapsAgreeWithExactGeometryAndWithCpu) {
   CLOTHBENCH_REQUIRE_GL();
   auto gl = make_is_gl_collider(ColliderOptions{});
-  const Report a = expect_accurate(*gl, "float maps");
-  // same maps, same answers
-  auto cpu = make_is_cpu_collider(ColliderOptions{});
-  const Report b = evaluate(*cpu, *body_, *sample_, *silhouette_, tol_);
-  long differ = 0;
-  for (std::size_t i = 0; i < a.contacts.size(); ++i) differ += a.contacts[i].hit != b.contacts[i].hit;
-  std::cout << "[ is-gl ] hit differs from is-cpu on " << differ << " of " << a.contacts.size() << " points\n";
-  EXPECT_LE(differ, 2);
-  const CollideStats st = gl->stats();
-  EXPECT_GT(st.setup_ms, 0);
-  EXPECT_EQ(st.points, static_cast<std::int64_t>(a.contacts.size()));
+  expect_opengl_accurate(*gl);
 }
+
+#ifdef CLOTHBENCH_WITH_EGL
+TEST_F(ImageSpaceAccuracy, EglMapsAgreeWithExactGeometryAndWithCpu) {
+  CLOTHBENCH_REQUIRE_EGL();
+  auto egl = make_is_egl_collider(ColliderOptions{});
+  expect_opengl_accurate(*egl);
+}
+#endif
 
 TEST_F(ImageSpaceAccuracy, FittedExtentAndLargerMapsAgreeToo) {
   ColliderOptions o;
@@ -504,13 +516,13 @@ TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocities) {
   expect_re_rendered_with_velocities(make_is_cpu_collider(ColliderOptions{}).get());
 }
 
-TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocitiesByGl) {
-  CLOTHBENCH_REQUIRE_GL();
+// an OpenGL collider's velocity maps, float and 8-bit (made by `make`)
+void expect_opengl_velocities(std::unique_ptr<Collider> (*make)(const ColliderOptions&)) {
   ColliderOptions eight;
   eight.float_maps = false;
-  expect_re_rendered_with_velocities(make_is_gl_collider(ColliderOptions{}).get());
+  expect_re_rendered_with_velocities(make(ColliderOptions{}).get());
   // 8-bit velocity: within one step of maxv * 2 / 255 (walking Eq. 10)
-  auto c = make_is_gl_collider(eight);
+  auto c = make(eight);
   BodyFrame s = make_sphere_body(Vec3(0, 0.5f, 0), 0.3f);
   s.moving = true;
   for (int v = 0; v < s.vertex_count(); ++v) s.velocities.col(v) = Vec3(1.0f, 0.0f, -0.5f);
@@ -522,6 +534,18 @@ TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocitiesByGl) {
   ASSERT_TRUE(out[0].hit);
   EXPECT_TRUE(test::near_vec(out[0].body_velocity, Vec3(1, 0, -0.5f), eight.max_speed * 2.0 / 255));
 }
+
+TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocitiesByGl) {
+  CLOTHBENCH_REQUIRE_GL();
+  expect_opengl_velocities(make_is_gl_collider);
+}
+
+#ifdef CLOTHBENCH_WITH_EGL
+TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocitiesByEgl) {
+  CLOTHBENCH_REQUIRE_EGL();
+  expect_opengl_velocities(make_is_egl_collider);
+}
+#endif
 
 TEST(ImageSpaceCollider, GlFactoryNamesItself) {
   CLOTHBENCH_REQUIRE_GL();

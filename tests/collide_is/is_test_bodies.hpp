@@ -10,6 +10,10 @@
 #include <string>
 
 #include "clothbench/collide_is/map_set.hpp"
+#include "clothbench/config.h"
+#ifdef CLOTHBENCH_WITH_EGL
+#include "clothbench/collide_is/egl_collider.hpp"
+#endif
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 
@@ -43,10 +47,28 @@ inline std::string gl_unavailable() {
   return why;
 }
 
-/// GL and CPU maps of `body` with `o` agree as for the papers' two views (map_set_test.cpp, GlMaps): the same
-/// coverage in every map (views and peeled layers), depth bit-identical on 99.9 % of the covered pixels, within 10 um.
-inline void expect_gl_matches_cpu(const BodyFrame& body, ColliderOptions o, const char* what) {
-  const MapSet gl = render_maps(body, "gl", o), cpu = render_maps(body, "cpu", o);
+/// Empty when is-egl can make an EGL context, else why not (or that the build has no is-egl).
+inline const std::string& egl_unavailable() {
+  static const std::string why = [] {
+#ifdef CLOTHBENCH_WITH_EGL
+    try {
+      make_egl_map_renderer();
+      return std::string();
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+#else
+    return std::string("is-egl is not built (CLOTHBENCH_WITH_EGL=OFF)");
+#endif
+  }();
+  return why;
+}
+
+/// Maps an OpenGL renderer drew (`gl`, of `body` with `o`) agree with the CPU rasteriser's as for the papers' two
+/// views (map_set_test.cpp, GlMaps): the same coverage in every map (views and peeled layers), depth
+/// bit-identical on 99.9 % of the covered pixels, within 10 um.
+inline void expect_maps_match_cpu(const MapSet& gl, const BodyFrame& body, const ColliderOptions& o, const char* what) {
+  const MapSet cpu = render_maps(body, "cpu", o);
   ASSERT_EQ(gl.z.size(), cpu.z.size());
   ASSERT_EQ(gl.z.size(), static_cast<std::size_t>(gl.frame.map_count()) * gl.view_pixels());
   long covered = 0, coverage_mismatch = 0, identical = 0;
@@ -68,7 +90,19 @@ inline void expect_gl_matches_cpu(const BodyFrame& body, ColliderOptions o, cons
   EXPECT_GE(double(identical) / double(covered), 0.999);
 }
 
+/// The same for is-gl's renderer (OSMesa).
+inline void expect_gl_matches_cpu(const BodyFrame& body, const ColliderOptions& o, const char* what) {
+  expect_maps_match_cpu(render_maps(body, "gl", o), body, o, what);
+}
+
 }  // namespace clothbench::test
+
+/// Skips the current test, with the reason, when is-egl cannot make its context (or is not built).
+#define CLOTHBENCH_REQUIRE_EGL()                                                   \
+  do {                                                                             \
+    if (!::clothbench::test::egl_unavailable().empty())                            \
+      GTEST_SKIP() << "no EGL context: " << ::clothbench::test::egl_unavailable(); \
+  } while (0)
 
 /// Skips the current test, with the reason, when no OpenGL context can be created.
 #define CLOTHBENCH_REQUIRE_GL()                                                      \

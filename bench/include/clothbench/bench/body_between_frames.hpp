@@ -24,6 +24,7 @@ class BodyBetweenFrames final : public Collider {
   /// `tol`: the hit distance of the inner collider's options [m] (ColliderOptions::tol); `skin` in [0, tol) [m].
   BodyBetweenFrames(Collider& inner, Real tol, Real skin = 0) : inner_(inner), tol_(tol), skin_(skin) {}
   std::string_view name() const override { return inner_.name(); }
+  std::string device() const override { return inner_.device(); }
   void set_body(const BodyFrame& body) override { inner_.set_body(body); }
   void update_body(const BodyFrame& body) override { inner_.update_body(body); }
   /// The next queries are answered `tau` >= 0 seconds before the pose of the last set_body/update_body.

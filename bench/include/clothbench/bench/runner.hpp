@@ -41,6 +41,7 @@ struct FrameSample {
 /// What a run measured. Times in ms unless named otherwise.
 struct RunResult {
   std::string scene, collider;
+  std::string device;  ///< what answered the collider's queries, where hardware or a driver (Collider::device())
   std::string integrator, regime;  ///< solver.integrator and solver.regime of the run
   std::string config_hash;      ///< config_hash of the scene as run (scene.hpp)
   double strain_threshold = 0;  ///< solver.threshold when a super-elasticity limit was on, else 0

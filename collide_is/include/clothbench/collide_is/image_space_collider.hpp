@@ -57,7 +57,10 @@ std::unique_ptr<Collider> make_is_gl_collider(const ColliderOptions& options);
 /// The same collider with maps from the CPU rasteriser; name() "is-cpu". In every build.
 std::unique_ptr<Collider> make_is_cpu_collider(const ColliderOptions& options);
 
-/// Either collider over an explicit renderer ("gl" or "cpu"); the MapSet stays readable for
+/// The depth test `options` ask for (tangent_plane: kTangentPlane, else the papers' kPapers).
+DepthTest image_space_depth_test(const ColliderOptions& options);
+
+/// The collider over an explicit renderer ("gl", "egl" or "cpu"); the MapSet stays readable for
 /// pictures and tests through maps().
 class ImageSpaceCollider final : public Collider {
  public:
@@ -66,6 +69,8 @@ class ImageSpaceCollider final : public Collider {
   ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, const ColliderOptions& options, double setup_ms,
                      DepthTest test = DepthTest::kTangentPlane, ViewRule rule = ViewRule::kHull);
   std::string_view name() const override;
+  /// The renderer's device (MapRenderer::device()).
+  std::string device() const override;
   void set_body(const BodyFrame& body) override;
   void update_body(const BodyFrame& body) override;
   void query(PointsView points, ContactsOut out) override;

@@ -172,16 +172,18 @@ class MapRenderer {
   MapRenderer(const MapRenderer&) = delete;
   MapRenderer& operator=(const MapRenderer&) = delete;
   virtual ~MapRenderer() = default;
-  /// "gl" or "cpu".
+  /// "gl", "egl" or "cpu".
   virtual std::string_view name() const = 0;
+  /// What draws the maps: "OSMesa: Mesa llvmpipe (LLVM 15.0.6, 256 bits)", "EGL device 0 ...: NVIDIA
+  /// Corporation NVIDIA H100", "our CPU rasteriser".
+  virtual std::string device() const = 0;
   /// Renders depth and normal maps (and velocity maps when maps.has_velocity) of `body`, every
   /// view and peeled layer, mask kBody or kEmpty. Does not add the side layer. Never throws once set up.
   virtual void render(const BodyFrame& body, MapSet& maps) = 0;
 };
 
-/// OpenGL via OSMesa (llvmpipe): one off-screen context with its own small client buffer,
-/// an FBO with two colour targets (normal, velocity; RGBA32F or RGBA8) and a depth target of
-/// size x (views x size), the views stacked upwards, read back with glReadPixels. Throws std::runtime_error when no context can be created or a
+/// OpenGL via OSMesa (llvmpipe): one off-screen context with its own small client buffer, drawing as
+/// make_gl_map_renderer(context) (gl_context.hpp). Throws std::runtime_error when no context can be created or a
 /// shader does not compile, and in builds without CLOTHBENCH_WITH_GL (message naming the option).
 std::unique_ptr<MapRenderer> make_gl_map_renderer();
 
@@ -199,5 +201,7 @@ std::unique_ptr<MapRenderer> make_cpu_map_renderer();
 /// "cpu". Throws std::invalid_argument for another name or a malformed body, std::runtime_error
 /// when GL is asked for and no context can be created or the build lacks CLOTHBENCH_WITH_GL.
 MapSet render_maps(const BodyFrame& body, std::string_view renderer, const ColliderOptions& options);
+/// The same with a renderer of the caller's (is-egl's, make_egl_map_renderer()).
+MapSet render_maps(const BodyFrame& body, MapRenderer& renderer, const ColliderOptions& options);
 
 }  // namespace clothbench

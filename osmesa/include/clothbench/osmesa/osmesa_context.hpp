@@ -28,6 +28,9 @@ class Context {
   std::vector<unsigned char> client_;  // RGBA client buffer (kClientSide^2)
 };
 
+/// The address of OpenGL function `name` in libOSMesa (OSMesaGetProcAddress), or null.
+void* proc_address(const char* name);
+
 /// Compiles a vertex and a fragment shader and links them into a program (the shaders are deleted
 /// once linked). Throws std::runtime_error "WHO: shader does not compile: LOG" or "WHO: shader
 /// program does not link". Needs a current context.

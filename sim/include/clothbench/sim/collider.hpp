@@ -88,6 +88,9 @@ class Collider {
   /// Registry name: "is-gl", "is-cpu", "fcl", "embree", "brute"; "sphere" (the analytic collider of the
   /// sphere scenes, made by the runner, not the registry).
   virtual std::string_view name() const = 0;
+  /// What answers the queries where that is hardware or a driver (image space: "OSMesa: Mesa llvmpipe ...",
+  /// "EGL device 0 ...: NVIDIA ..."); empty for the rest.
+  virtual std::string device() const { return {}; }
   /// Set-up for a body: maps rendered or BVH built. Throws std::runtime_error /
   /// std::invalid_argument with a clear message on bad input.
   virtual void set_body(const BodyFrame& body) = 0;

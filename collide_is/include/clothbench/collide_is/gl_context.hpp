@@ -1,0 +1,36 @@
+#pragma once
+/// An OpenGL context for the image-space map renderer, whoever provides it: OSMesa (is-gl, in this library)
+/// or EGL (is-egl, clothbench::collide_is_egl). The renderer (make_gl_map_renderer(context)) draws through the
+/// functions the context's provider hands out, so one process may hold contexts of both.
+#include <memory>
+#include <string>
+
+#include "clothbench/collide_is/map_set.hpp"
+
+namespace clothbench {
+
+class GlContext {
+ public:
+  GlContext() = default;
+  GlContext(const GlContext&) = delete;
+  GlContext& operator=(const GlContext&) = delete;
+  virtual ~GlContext() = default;
+  /// Makes this context current on the calling thread; false when the provider refuses.
+  virtual bool make_current() = 0;
+  /// The address of OpenGL function `name` ("glDrawElements") from this context's provider, or null.
+  virtual void* proc(const char* name) = 0;
+  /// Who reports errors ("is-gl", "is-egl") and the renderer's name ("gl", "egl").
+  virtual std::string who() const = 0;
+  virtual std::string renderer_name() const = 0;
+  /// How the context was made, for the device string ("OSMesa", "EGL device 0 (EGL_MESA_device_software)").
+  virtual std::string provider() const = 0;
+};
+
+/// The OpenGL map renderer on `context` (made current at construction and before every render): one FBO with
+/// two colour targets (normal, velocity; RGBA32F or RGBA8) and a depth target of size x (views x size), the
+/// views stacked upwards, peeled layers drawn again with a shader discarding what is not beyond the last,
+/// read back with glReadPixels. Its device() names the provider, GL_VENDOR and GL_RENDERER. Throws
+/// std::runtime_error when a function is missing or a shader does not compile.
+std::unique_ptr<MapRenderer> make_gl_map_renderer(std::unique_ptr<GlContext> context);
+
+}  // namespace clothbench

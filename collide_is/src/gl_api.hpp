@@ -1,0 +1,58 @@
+#pragma once
+// The OpenGL functions the map renderer calls, loaded from its context's provider (OSMesaGetProcAddress or
+// eglGetProcAddress) into a table: no gl* symbol is linked, so the OSMesa and the EGL renderer each call
+// their own library's functions, even with both loaded in one process (libOSMesa and libOpenGL both export
+// gl*, and a link against both binds every call to whichever comes first).
+// the prototypes are declared for their types only (decltype): nothing here is linked
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace clothbench {
+
+// X(name) for every function, gl<name> in GL's headers
+#define CLOTHBENCH_GL_FUNCTIONS(X)                                                                                     \
+  X(ActiveTexture)                                                                                                     \
+  X(AttachShader) X(BindBuffer) X(BindFramebuffer) X(BindRenderbuffer) X(BindTexture) X(BindVertexArray) X(BufferData) \
+      X(CheckFramebufferStatus) X(Clear) X(ClearColor) X(ClearDepth) X(CompileShader) X(CreateProgram) X(CreateShader) \
+          X(DeleteBuffers) X(DeleteFramebuffers) X(DeleteProgram) X(DeleteRenderbuffers) X(DeleteShader)               \
+              X(DeleteTextures) X(DeleteVertexArrays) X(DepthFunc) X(Disable) X(DisableVertexAttribArray)              \
+                  X(DrawBuffers) X(DrawElements) X(Enable) X(EnableVertexAttribArray) X(FramebufferRenderbuffer)       \
+                      X(GenBuffers) X(GenFramebuffers) X(GenRenderbuffers) X(GenTextures) X(GenVertexArrays)           \
+                          X(GetError) X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString)                  \
+                              X(GetUniformLocation) X(LinkProgram) X(PixelStorei) X(ReadBuffer) X(ReadPixels)          \
+                                  X(RenderbufferStorage) X(Scissor) X(ShaderSource) X(TexImage2D) X(TexParameteri)     \
+                                      X(Uniform1f) X(Uniform1i) X(UniformMatrix4fv) X(UseProgram) X(VertexAttrib3f)    \
+                                          X(VertexAttribPointer) X(Viewport)
+
+// the gl<name> prototypes of GL's headers, as pointer types (GL 1.x functions have no PFN... typedef there)
+#define CLOTHBENCH_GL_TYPE(name) using name##_fn = std::remove_pointer_t<decltype(&::gl##name)>*;
+namespace gl_types {
+CLOTHBENCH_GL_FUNCTIONS(CLOTHBENCH_GL_TYPE)
+}
+#undef CLOTHBENCH_GL_TYPE
+
+struct GlApi {
+#define CLOTHBENCH_GL_MEMBER(name) gl_types::name##_fn name = nullptr;
+  CLOTHBENCH_GL_FUNCTIONS(CLOTHBENCH_GL_MEMBER)
+#undef CLOTHBENCH_GL_MEMBER
+
+  // every function from `proc` (a name -> address lookup of the current context's provider); throws
+  // std::runtime_error "WHO: OpenGL function glNAME not found" for one it lacks
+  template <class Proc>
+  static GlApi load(Proc&& proc, const std::string& who) {
+    GlApi gl;
+#define CLOTHBENCH_GL_LOAD(name)                                     \
+  gl.name = reinterpret_cast<gl_types::name##_fn>(proc("gl" #name)); \
+  if (!gl.name) throw std::runtime_error(who + ": OpenGL function gl" #name " not found");
+    CLOTHBENCH_GL_FUNCTIONS(CLOTHBENCH_GL_LOAD)
+#undef CLOTHBENCH_GL_LOAD
+    return gl;
+  }
+};
+
+}  // namespace clothbench

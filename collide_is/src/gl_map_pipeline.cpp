@@ -1,0 +1,306 @@
+// The OpenGL renderer of the image-space maps, on any provider's context (OSMesa, EGL): one FBO holding every
+// view, every call through the context's own functions (gl_api.hpp).
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "clothbench/collide_is/gl_context.hpp"
+#include "clothbench/collide_is/map_set.hpp"
+#include "gl_api.hpp"
+
+namespace clothbench {
+namespace {
+
+constexpr const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 velocity;
+uniform mat4 clip_from_world;
+noperspective out vec3 body_normal;
+noperspective out vec3 body_velocity;
+void main() {
+  gl_Position = clip_from_world * vec4(position, 1.0);
+  body_normal = normal;
+  body_velocity = velocity;
+}
+)";
+
+// float targets keep the interpolated vectors; 8-bit targets get dressing Eq. 6 and walking Eq. 9
+// (the printed Eq. 9 reads 0.5 v + 0.5 / maxv; its inverse, Eq. 10, fixes it as 0.5 v / maxv + 0.5)
+// depth peeling (peel != 0): only fragments beyond the previous layer's z-buffer value at the pixel
+// by more than `gap` (kPeelGap), read from `previous` (that layer, laid out as the target)
+constexpr const char* kFragmentShader = R"(#version 330 core
+noperspective in vec3 body_normal;
+noperspective in vec3 body_velocity;
+uniform int encode8;
+uniform float max_speed;
+uniform int peel;
+uniform sampler2D previous;
+uniform float gap;
+layout(location = 0) out vec4 normal_out;
+layout(location = 1) out vec4 velocity_out;
+void main() {
+  if (peel != 0 && gl_FragCoord.z <= texelFetch(previous, ivec2(gl_FragCoord.xy), 0).r + gap)
+    discard;
+  if (encode8 != 0) {
+    normal_out = vec4(0.5 * body_normal + 0.5, 1.0);
+    velocity_out = vec4(0.5 * body_velocity / max_speed + 0.5, 1.0);
+  } else {
+    normal_out = vec4(body_normal, 1.0);
+    velocity_out = vec4(body_velocity, 1.0);
+  }
+}
+)";
+
+class GlMapRenderer final : public MapRenderer {
+ public:
+  explicit GlMapRenderer(std::unique_ptr<GlContext> context)
+      : context_(std::move(context)), who_(context_->who()), name_(context_->renderer_name()) {
+    if (!context_->make_current()) throw std::runtime_error(who_ + ": the OpenGL context cannot be made current");
+    gl_ = GlApi::load([this](const char* f) { return context_->proc(f); }, who_);
+    set_up();
+  }
+
+  ~GlMapRenderer() override {
+    make_current();
+    release_targets();
+    gl_.DeleteTextures(1, &previous_);
+    gl_.DeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
+    gl_.DeleteVertexArrays(1, &vao_);
+    gl_.DeleteProgram(program_);
+  }
+
+  std::string_view name() const override { return name_; }
+  std::string device() const override { return device_; }
+
+  void render(const BodyFrame& body, MapSet& maps) override {
+    make_current();
+    targets(maps);
+    upload(body, maps.has_velocity);
+    draw(body, maps);
+    read_back(maps, 0, views_, 0);
+    for (int layer = 2; layer <= maps.frame.layers; ++layer) peel(body, maps, layer);
+    depth_from_zbuffer(maps);
+  }
+
+ private:
+  // shaders, uniforms and vertex arrays in the new context
+  void set_up() {
+    // shaders and their uniforms
+    program_ = link_program();
+    u_clip_ = gl_.GetUniformLocation(program_, "clip_from_world");
+    u_encode8_ = gl_.GetUniformLocation(program_, "encode8");
+    u_max_speed_ = gl_.GetUniformLocation(program_, "max_speed");
+    u_peel_ = gl_.GetUniformLocation(program_, "peel");
+    gl_.UseProgram(program_);
+    gl_.Uniform1i(gl_.GetUniformLocation(program_, "previous"), 0);
+    gl_.Uniform1f(gl_.GetUniformLocation(program_, "gap"), kPeelGap);
+    // the previous layer's z-buffer values, fetched texel by texel
+    gl_.GenTextures(1, &previous_);
+    gl_.BindTexture(GL_TEXTURE_2D, previous_);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // vertex arrays: positions, normals, velocities, indices
+    gl_.GenVertexArrays(1, &vao_);
+    gl_.BindVertexArray(vao_);
+    gl_.GenBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, vbo_[3]);
+    if (gl_.GetError() != GL_NO_ERROR) throw std::runtime_error(who_ + ": OpenGL set-up failed");
+    const auto text = [&](GLenum what) {
+      const auto* s = reinterpret_cast<const char*>(gl_.GetString(what));
+      return std::string(s ? s : "?");
+    };
+    device_ = context_->provider() + ": " + text(GL_VENDOR) + " " + text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
+  }
+
+  void make_current() { context_->make_current(); }
+
+  GLuint compile(GLenum type, const char* source) {
+    const GLuint s = gl_.CreateShader(type);
+    gl_.ShaderSource(s, 1, &source, nullptr);
+    gl_.CompileShader(s);
+    GLint ok = 0;
+    gl_.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      std::array<char, 2048> log{};
+      gl_.GetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, log.data());
+      gl_.DeleteShader(s);
+      throw std::runtime_error(who_ + ": shader does not compile: " + log.data());
+    }
+    return s;
+  }
+
+  // the two shaders compiled and linked (then deleted)
+  GLuint link_program() {
+    const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
+    GLuint fs = 0;
+    try {
+      fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+    } catch (...) {
+      gl_.DeleteShader(vs);
+      throw;
+    }
+    const GLuint program = gl_.CreateProgram();
+    gl_.AttachShader(program, vs);
+    gl_.AttachShader(program, fs);
+    gl_.LinkProgram(program);
+    gl_.DeleteShader(vs);
+    gl_.DeleteShader(fs);
+    GLint ok = 0;
+    gl_.GetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+      gl_.DeleteProgram(program);
+      throw std::runtime_error(who_ + ": shader program does not link");
+    }
+    return program;
+  }
+
+  // (re)creates the FBO when size, view count or encoding changed: size x (views x size), front
+  // below back, the extra views above them
+  void targets(const MapSet& maps) {
+    const bool same = fbo_ && size_ == maps.frame.size && views_ == maps.frame.views && float_ == maps.float_maps;
+    if (same) return;
+    release_targets();
+    size_ = maps.frame.size;
+    views_ = maps.frame.views;
+    float_ = maps.float_maps;
+    gl_.GenFramebuffers(1, &fbo_);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    gl_.GenRenderbuffers(static_cast<GLsizei>(rbo_.size()), rbo_.data());
+    const GLenum colour = float_ ? GL_RGBA32F : GL_RGBA8;
+    const GLenum depth = float_ ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24;
+    const std::array<GLenum, 3> formats = {colour, colour, depth};
+    const std::array<GLenum, 3> points = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_DEPTH_ATTACHMENT};
+    for (std::size_t k = 0; k < rbo_.size(); ++k) {
+      gl_.BindRenderbuffer(GL_RENDERBUFFER, rbo_[k]);
+      gl_.RenderbufferStorage(GL_RENDERBUFFER, formats[k], size_, views_ * size_);
+      gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, points[k], GL_RENDERBUFFER, rbo_[k]);
+    }
+    if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error(who_ + ": framebuffer of " + std::to_string(views_) + " x " + std::to_string(size_) +
+                               "^2 maps is incomplete");
+  }
+
+  void release_targets() {
+    if (!fbo_) return;
+    gl_.DeleteFramebuffers(1, &fbo_);
+    gl_.DeleteRenderbuffers(static_cast<GLsizei>(rbo_.size()), rbo_.data());
+    fbo_ = 0;
+  }
+
+  // vertex attributes straight from the frame's packed 3 x n float arrays
+  void upload(const BodyFrame& body, bool velocity) {
+    const auto bytes = [](const auto& m) { return static_cast<GLsizeiptr>(m.size() * sizeof(float)); };
+    const std::array<const Points3*, 3> arrays = {&body.positions, &body.normals, &body.velocities};
+    for (GLuint k = 0; k < 3; ++k) {
+      if (k == 2 && !velocity) {
+        gl_.DisableVertexAttribArray(2);
+        gl_.VertexAttrib3f(2, 0.0f, 0.0f, 0.0f);
+        continue;
+      }
+      gl_.BindBuffer(GL_ARRAY_BUFFER, vbo_[k]);
+      gl_.BufferData(GL_ARRAY_BUFFER, bytes(*arrays[k]), arrays[k]->data(), GL_STREAM_DRAW);
+      gl_.VertexAttribPointer(k, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+      gl_.EnableVertexAttribArray(k);
+    }
+    gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(body.triangles.size() * sizeof(std::int32_t)),
+                   body.triangles.data(), GL_STREAM_DRAW);
+  }
+
+  // every view, depth test keeping the surface nearest each camera; both targets always bound so
+  // a moving frame after a static one needs no new shader variant (a static body's velocity
+  // target gets zeros and is not read back)
+  void draw(const BodyFrame& body, const MapSet& maps) {
+    const std::array<GLenum, 2> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl_.DrawBuffers(2, buffers.data());
+    clear();
+    gl_.Enable(GL_DEPTH_TEST);
+    gl_.DepthFunc(GL_LESS);
+    gl_.Disable(GL_CULL_FACE);
+    gl_.UseProgram(program_);
+    gl_.Uniform1i(u_encode8_, maps.float_maps ? 0 : 1);
+    gl_.Uniform1f(u_max_speed_, maps.max_speed);
+    gl_.Uniform1i(u_peel_, 0);
+    for (int view = 0; view < views_; ++view) draw_view(body, maps.frame, view);
+  }
+
+  void clear() {
+    gl_.ClearColor(0, 0, 0, 0);
+    gl_.ClearDepth(1.0);
+    gl_.Disable(GL_SCISSOR_TEST);
+    gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl_.Enable(GL_SCISSOR_TEST);
+  }
+
+  // one view into its rows of the target
+  void draw_view(const BodyFrame& body, const MapFrame& frame, int view) {
+    gl_.Viewport(0, view * size_, size_, size_);
+    gl_.Scissor(0, view * size_, size_, size_);
+    const std::array<float, 16> m = clip_from_world(frame, view);
+    gl_.UniformMatrix4fv(u_clip_, 1, GL_FALSE, m.data());
+    gl_.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(body.triangles.size()), GL_UNSIGNED_INT, nullptr);
+  }
+
+  // depth peeling: layer `layer` of every even view, drawn again into the view's own rows (the
+  // same window coordinates, so the same depths, as the first pass and the CPU rasteriser) beyond
+  // layer - 1's z-buffer values, uploaded as a texture laid out as the target; read back into the layer's maps
+  void peel(const BodyFrame& body, MapSet& maps, int layer) {
+    const MapFrame& f = maps.frame;
+    const std::size_t n = maps.view_pixels();
+    previous_depth_.assign(views_ * n, 1.0f);
+    for (int view = 0; view < views_; view += 2)
+      std::copy_n(maps.z.begin() + f.peel_map(view, layer - 1) * n, n, previous_depth_.begin() + view * n);
+    gl_.ActiveTexture(GL_TEXTURE0);
+    gl_.BindTexture(GL_TEXTURE_2D, previous_);
+    gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, size_, views_ * size_, 0, GL_RED, GL_FLOAT, previous_depth_.data());
+    clear();
+    gl_.Uniform1i(u_peel_, 1);
+    for (int view = 0; view < views_; view += 2) draw_view(body, f, view);
+    gl_.Uniform1i(u_peel_, 0);
+    for (int view = 0; view < views_; view += 2) read_back(maps, view, 1, f.peel_map(view, layer));
+  }
+
+  // z-buffer values and colours of `count` views from `view` into maps `map`, map + 1, ... (raw
+  // z-buffer values: depth_from_zbuffer turns them into coordinates once every layer is in)
+  void read_back(MapSet& maps, int view, int count, int map) {
+    const std::size_t at = static_cast<std::size_t>(map) * maps.view_pixels();
+    const GLint y = view * size_;
+    const GLsizei rows = count * size_;
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_.ReadPixels(0, y, size_, rows, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data() + at);
+    const GLenum type = maps.float_maps ? GL_FLOAT : GL_UNSIGNED_BYTE;
+    const auto colours = [&](std::vector<float>& floats, std::vector<std::uint8_t>& bytes) {
+      return maps.float_maps ? static_cast<void*>(floats.data() + 4 * at) : bytes.data() + 4 * at;
+    };
+    gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl_.ReadPixels(0, y, size_, rows, GL_RGBA, type, colours(maps.normal, maps.normal8));
+    if (maps.has_velocity) {
+      gl_.ReadBuffer(GL_COLOR_ATTACHMENT1);
+      gl_.ReadPixels(0, y, size_, rows, GL_RGBA, type, colours(maps.velocity, maps.velocity8));
+    }
+  }
+
+  std::unique_ptr<GlContext> context_;  // first member: destroyed after the GL objects the destructor deletes
+  std::string who_, name_, device_;
+  GlApi gl_;
+  GLuint program_ = 0, vao_ = 0, fbo_ = 0, previous_ = 0;
+  std::array<GLuint, 4> vbo_{};  // positions, normals, velocities, indices
+  std::array<GLuint, 3> rbo_{};  // normal, velocity, depth
+  GLint u_clip_ = -1, u_encode8_ = -1, u_max_speed_ = -1, u_peel_ = -1;
+  std::vector<float> previous_depth_;  // the previous layer's z-buffer values, laid out as the target
+  int size_ = 0;
+  int views_ = 2;
+  bool float_ = true;
+};
+
+}  // namespace
+
+std::unique_ptr<MapRenderer> make_gl_map_renderer(std::unique_ptr<GlContext> context) {
+  return std::make_unique<GlMapRenderer>(std::move(context));
+}
+
+}  // namespace clothbench
