@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/history.hpp"
@@ -55,6 +56,27 @@ std::string since_previous(ExperimentContext& ctx, const std::vector<std::pair<s
          t.str();
 }
 
+// what the OpenGL colliders draw on (GL_VENDOR, GL_RENDERER), and whether any of it is a GPU
+std::string opengl_devices() {
+  std::string list;
+  bool gpu = false;
+  for (const std::string name : {"is-gl", "is-egl"}) {
+    const auto built = available_colliders();
+    if (std::find(built.begin(), built.end(), name) == built.end()) continue;
+    std::string device;
+    try {
+      device = make_collider(name)->device();
+    } catch (const std::exception& e) {
+      device = std::string("no context: ") + e.what();
+    }
+    gpu = gpu || (device.find("llvmpipe") == std::string::npos && device.rfind("no context", 0) != 0);
+    list += "- `" + name + "`: " + device + "\n";
+  }
+  if (list.empty()) return {};
+  return std::string("OpenGL devices (image space; every JSON row that used one names it as `device`)") +
+         (gpu ? ":" : ", **no GPU**: the OpenGL timings are Mesa's CPU rasteriser (llvmpipe):") + "\n\n" + list + "\n";
+}
+
 // results/README.md: the index of every experiment and the machine
 void write_index(ExperimentContext& ctx, const std::string& out, const std::vector<std::pair<std::string, double>>& done,
                  bool quick) {
@@ -66,7 +88,8 @@ void write_index(ExperimentContext& ctx, const std::string& out, const std::vect
      << "Machine: " << c["cpu_model"].get<std::string>() << ", " << c["num_cpus"] << " cores, host "
      << c["host_name"].get<std::string>() << "; compiler " << c["compiler"].get<std::string>() << ", "
      << c["build_type"].get<std::string>() << ", flags `" << c["cxx_flags"].get<std::string>() << "`; git "
-     << c["git_sha"].get<std::string>() << "; " << c["date"].get<std::string>() << ".\n\n";
+     << c["git_sha"].get<std::string>() << "; " << c["date"].get<std::string>() << ".\n\n"
+     << opengl_devices();
   MarkdownTable t({"ID", "what", "table", "data", "wall time [s]"});
   for (const auto& [id, seconds] : done) {
     std::string title;
