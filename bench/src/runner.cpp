@@ -324,10 +324,18 @@ double estimate_seconds(const Simulator& sim, Collider& dresser, Collider& colli
 // the frame; with body.move_between_frames each step sees the body where it was at the step's time
 // (BodyBetweenFrames), else the frame's end pose throughout
 bool advance_frame(const BodySource& source, double t, double frame_dt, long steps, Simulator& sim,
-                   BodyBetweenFrames& collider, bool between, BodyFrame& frame, double& skinning_ms) {
+                   BodyBetweenFrames& collider, bool between, Real region_margin, BodyFrame& frame,
+                   double& skinning_ms) {
   Stopwatch skin;
   source.frame_into(frame, t);
   skinning_ms += skin.ms();
+  // the queries of this frame come from the cloth's box grown by what it can move in a frame (image space then
+  // draws only the map rows that spans)
+  if (region_margin > 0) {
+    Box3 region = bounding_box(sim.positions());
+    region.min.array() -= region_margin, region.max.array() += region_margin;
+    collider.set_query_region(region);
+  }
   collider.update_body(frame);
   const bool attached = !sim.mesh().attached.empty();
   if (attached && !between) sim.follow_attachments(frame);
@@ -384,10 +392,11 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   const Real tol = scene.collider_options.tol;
   const bool between = scene.body.move_between_frames;
   const Real skin = Real(scene.body.skin_mm * 1e-3);
+  const Real margin = Real(scene.collider_options.query_margin_mm * 1e-3);
   BodyBetweenFrames dresser_between(dresser, tol, skin), collider_between(collider, tol, skin);
   for (long f = 1; f <= lead_in && alive; ++f) {
     alive = advance_frame(source, source.dress_time() + double(f) * frame_dt, frame_dt, steps, sim, dresser_between,
-                          between, frame, unmeasured_ms);
+                          between, margin, frame, unmeasured_ms);
     progress.report("animate (lead-in): frame %ld of %ld", f, lead_in);
   }
   collider.update_body(frame);
@@ -398,7 +407,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   double not_animation_ms = 0, not_animation_cpu_ms = 0;
   for (long f = 1; f <= frames && alive; ++f) {
     const double t = source.start() + double(f) * frame_dt;
-    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, frame, r.skinning_ms);
+    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, margin, frame, r.skinning_ms);
     ++r.frames;
     r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
     Stopwatch outside;  // the oracle and the caller's callback are not the animation's time

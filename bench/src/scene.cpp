@@ -248,6 +248,7 @@ void read_collider(Section s, Scene& scene) {
   s.flag("float_maps", o.float_maps);
   s.flag("tangent_plane", o.tangent_plane);
   s.number("max_speed", o.max_speed, 1e-3, 1e3);
+  s.number("query_margin_mm", o.query_margin_mm, 0, 1e4);
   s.number("threads", o.threads, 1, 256);
   s.flag("coherent", o.coherent);
   s.number("voxel_size", o.voxel_size, 1e-4, 0.1);
@@ -418,7 +419,7 @@ std::string collider_config(const Scene& s) {
   w("map_size", o.map_size)("side_layer", o.side_layer)("fit_extent", o.fit_extent)("float_maps", o.float_maps);
   w("max_speed", double(o.max_speed))("threads", o.threads)("coherent", o.coherent)("face_normals", o.face_normals);
   w("voxel_size", double(o.voxel_size))("views", o.views)("layers", o.layers)("side_layer_mm", double(o.side_layer_mm));
-  w("tangent_plane", o.tangent_plane);
+  w("tangent_plane", o.tangent_plane)("query_margin_mm", double(o.query_margin_mm));
   return w.str();
 }
 

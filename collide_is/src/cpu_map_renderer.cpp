@@ -69,8 +69,15 @@ class CpuMapRenderer final : public MapRenderer {
   void render(const BodyFrame& body, MapSet& maps) override {
     // window coordinates and z-buffer depth of every view, as GL computes them
     project(body, maps.frame);
-    // z-buffer cleared to the far plane, turned into geometry space at the end (as GL's read-back)
-    std::fill(maps.z.begin(), maps.z.end(), 1.0f);
+    // z-buffer cleared to the far plane in the rows drawn, turned into geometry space at the end (as GL's read-back)
+    const std::size_t n = maps.view_pixels(), size = static_cast<std::size_t>(maps.frame.size);
+    for (int map = 0; map < maps.frame.map_count(); ++map) {
+      const auto v = static_cast<std::size_t>(maps.frame.view_of(map));
+      if (maps.row_first[v] > maps.row_last[v]) continue;
+      const auto at = maps.z.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(map) * n);
+      std::fill(at + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(maps.row_first[v]) * size),
+                at + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(maps.row_last[v] + 1) * size), 1.0f);
+    }
     // one pass over the triangles, every view
     for (Eigen::Index t = 0; t < body.triangles.cols(); ++t) {
       const int i0 = body.triangles(0, t), i1 = body.triangles(1, t), i2 = body.triangles(2, t);
@@ -161,14 +168,15 @@ class CpuMapRenderer final : public MapRenderer {
     // zero snapped area draws nothing
     const std::int64_t area = edge(w[0], w[1], w[2].fx, w[2].fy);
     if (area == 0) return;
-    // integer sample range of the snapped bounding box, clipped to this view's rows of the target
+    // integer sample range of the snapped bounding box, clipped to this view's rows of the target (those it draws)
     const int n = maps.frame.size, row_offset = view * n;
     const auto lo = [](std::int64_t v) { return static_cast<int>(-((-v) >> kSubpixelBits)); };
     const auto hi = [](std::int64_t v) { return static_cast<int>(v >> kSubpixelBits); };
     const int c0 = std::max(0, lo(std::min({w[0].fx, w[1].fx, w[2].fx})));
     const int c1 = std::min(n - 1, hi(std::max({w[0].fx, w[1].fx, w[2].fx})));
-    const int r0 = std::max(row_offset, lo(std::min({w[0].fy, w[1].fy, w[2].fy})));
-    const int r1 = std::min(row_offset + n - 1, hi(std::max({w[0].fy, w[1].fy, w[2].fy})));
+    const auto v = static_cast<std::size_t>(view);
+    const int r0 = std::max(row_offset + maps.row_first[v], lo(std::min({w[0].fy, w[1].fy, w[2].fy})));
+    const int r1 = std::min(row_offset + maps.row_last[v], hi(std::max({w[0].fy, w[1].fy, w[2].fy})));
     if (c0 > c1 || r0 > r1) return;
     // depth in llvmpipe's vertex order: a counter-clockwise triangle (y up) has its first two
     // vertices swapped (lp_setup_tri, provoking vertex last)

@@ -81,7 +81,7 @@ class GlMapRenderer final : public MapRenderer {
     targets(maps);
     upload(body, maps.has_velocity);
     draw(body, maps);
-    read_back(maps, 0, views_, 0);
+    for (int view = 0; view < views_; ++view) read_back(maps, view, view);
     for (int layer = 2; layer <= maps.frame.layers; ++layer) peel(body, maps, layer);
     depth_from_zbuffer(maps);
   }
@@ -224,7 +224,7 @@ class GlMapRenderer final : public MapRenderer {
     gl_.Uniform1i(u_encode8_, maps.float_maps ? 0 : 1);
     gl_.Uniform1f(u_max_speed_, maps.max_speed);
     gl_.Uniform1i(u_peel_, 0);
-    for (int view = 0; view < views_; ++view) draw_view(body, maps.frame, view);
+    for (int view = 0; view < views_; ++view) draw_view(body, maps, view);
   }
 
   void clear() {
@@ -235,11 +235,14 @@ class GlMapRenderer final : public MapRenderer {
     gl_.Enable(GL_SCISSOR_TEST);
   }
 
-  // one view into its rows of the target
-  void draw_view(const BodyFrame& body, const MapFrame& frame, int view) {
+  // one view into its rows of the target (those the maps draw)
+  void draw_view(const BodyFrame& body, const MapSet& maps, int view) {
+    const int first = maps.row_first[static_cast<std::size_t>(view)],
+              last = maps.row_last[static_cast<std::size_t>(view)];
+    if (first > last) return;
     gl_.Viewport(0, view * size_, size_, size_);
-    gl_.Scissor(0, view * size_, size_, size_);
-    const std::array<float, 16> m = clip_from_world(frame, view);
+    gl_.Scissor(0, view * size_ + first, size_, last - first + 1);
+    const std::array<float, 16> m = clip_from_world(maps.frame, view);
     gl_.UniformMatrix4fv(u_clip_, 1, GL_FALSE, m.data());
     gl_.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(body.triangles.size()), GL_UNSIGNED_INT, nullptr);
   }
@@ -259,22 +262,26 @@ class GlMapRenderer final : public MapRenderer {
     gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, size_, views_ * size_, 0, GL_RED, GL_FLOAT, previous_depth_.data());
     clear();
     gl_.Uniform1i(u_peel_, 1);
-    for (int view = 0; view < views_; view += 2) draw_view(body, f, view);
+    for (int view = 0; view < views_; view += 2) draw_view(body, maps, view);
     gl_.Uniform1i(u_peel_, 0);
-    for (int view = 0; view < views_; view += 2) read_back(maps, view, 1, f.peel_map(view, layer));
+    for (int view = 0; view < views_; view += 2) read_back(maps, view, f.peel_map(view, layer));
   }
 
-  // z-buffer values and colours of `count` views from `view` into maps `map`, map + 1, ... (raw
-  // z-buffer values: depth_from_zbuffer turns them into coordinates once every layer is in)
-  void read_back(MapSet& maps, int view, int count, int map) {
+  // z-buffer values and colours of view `view`'s rows the maps draw into map `map` (raw z-buffer values:
+  // depth_from_zbuffer turns them into coordinates once every layer is in; the other rows stay empty)
+  void read_back(MapSet& maps, int view, int map) {
     const std::size_t at = static_cast<std::size_t>(map) * maps.view_pixels();
-    const GLint y = view * size_;
-    const GLsizei rows = count * size_;
+    const int first = maps.row_first[static_cast<std::size_t>(view)],
+              last = maps.row_last[static_cast<std::size_t>(view)];
+    if (first > last) return;
+    const std::size_t from = static_cast<std::size_t>(first) * size_;
+    const GLint y = view * size_ + first;
+    const GLsizei rows = last - first + 1;
     gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_.ReadPixels(0, y, size_, rows, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data() + at);
+    gl_.ReadPixels(0, y, size_, rows, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data() + at + from);
     const GLenum type = maps.float_maps ? GL_FLOAT : GL_UNSIGNED_BYTE;
     const auto colours = [&](std::vector<float>& floats, std::vector<std::uint8_t>& bytes) {
-      return maps.float_maps ? static_cast<void*>(floats.data() + 4 * at) : bytes.data() + 4 * at;
+      return maps.float_maps ? static_cast<void*>(floats.data() + 4 * (at + from)) : bytes.data() + 4 * (at + from);
     };
     gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
     gl_.ReadPixels(0, y, size_, rows, GL_RGBA, type, colours(maps.normal, maps.normal8));

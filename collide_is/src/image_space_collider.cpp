@@ -31,6 +31,7 @@ void ImageSpaceCollider::render(const BodyFrame& body) {
   // cameras on this frame's bounding box, velocity maps only for moving bodies
   maps_.reset(make_map_frame(bounding_box(body.positions), options_), options_.float_maps, body.moving,
               options_.max_speed);
+  if (region_) maps_.limit_rows(*region_);
   renderer_->render(body, maps_);
   if (const int rings = side_layer_rings(options_, maps_.frame.pixel)) add_side_layer(maps_, rings);
 }

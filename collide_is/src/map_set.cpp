@@ -119,6 +119,19 @@ void MapSet::reset(const MapFrame& new_frame, bool floats, bool with_velocity, R
   normal8.resize(floats ? 0 : 4 * views * n);
   velocity.resize(floats && with_velocity ? 4 * views * n : 0);
   velocity8.resize(!floats && with_velocity ? 4 * views * n : 0);
+  row_first.fill(0);
+  row_last.fill(new_frame.size - 1);
+}
+
+void MapSet::limit_rows(const Box3& region) {
+  for (int view = 0; view < frame.views; ++view) {
+    const int axis = MapFrame::row_axis(view);
+    const Real o = frame.origin(axis);
+    const int first = static_cast<int>(std::floor((region.min[axis] - o) / frame.pixel)) - 1;
+    const int last = static_cast<int>(std::ceil((region.max[axis] - o) / frame.pixel)) + 1;
+    row_first[static_cast<std::size_t>(view)] = std::max(first, 0);
+    row_last[static_cast<std::size_t>(view)] = std::min(last, frame.size - 1);
+  }
 }
 
 Vec3 MapSet::raw_normal_at(std::size_t i) const {
@@ -198,7 +211,12 @@ void depth_from_zbuffer(MapSet& maps) {
     // dressing Eq. 5: z-buffer to geometry space (along the view's axis for the extra views)
     const int axis = MapFrame::view_axis(view);
     const Real lo = f.plane_min(axis), hi = f.plane_max(axis);
-    for (std::size_t i = static_cast<std::size_t>(map) * n; i < static_cast<std::size_t>(map + 1) * n; ++i) {
+    // the rows drawn (the others keep reset()'s empty values)
+    const auto v = static_cast<std::size_t>(view);
+    if (maps.row_first[v] > maps.row_last[v]) continue;
+    const std::size_t begin = static_cast<std::size_t>(map) * n + static_cast<std::size_t>(maps.row_first[v]) * f.size;
+    const std::size_t end = static_cast<std::size_t>(map) * n + static_cast<std::size_t>(maps.row_last[v] + 1) * f.size;
+    for (std::size_t i = begin; i < end; ++i) {
       const float zbuf = maps.z[i];
       // nothing drawn: the comparison of Eq. 9 must fail there
       if (zbuf >= 1.0f) {

@@ -118,6 +118,26 @@ TEST(Runner, AWalkingBodyStandsStillWhileTheGarmentIsDressedOnIt) {
               r.sew.iterations, r.drape.iterations, r.window_seam_gap_mm);
 }
 
+// image space on a moving body draws only the map rows the cloth's box (grown by collider.query_margin_mm) spans:
+// the run is the one with every row drawn, bit for bit, and the maps cost less
+TEST(Runner, MapsOfTheRowsTheClothSpansGiveTheSameRun) {
+  RunOptions quiet;
+  quiet.progress = false;
+  const auto run = [&](const char* margin) {
+    return run_scene(load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/walking/skirt.toml",
+                                {"garment.vertices=200", "collider.name=is-cpu", "collider.dress_with=embree",
+                                 "body.end_s=1.2", std::string("collider.query_margin_mm=") + margin}),
+                     quiet);
+  };
+  const RunResult rows = run("100"), every = run("0");
+  ASSERT_FALSE(rows.divergence);
+  ASSERT_EQ(rows.mesh.positions.size(), every.mesh.positions.size());
+  EXPECT_EQ(0, std::memcmp(rows.mesh.positions.data(), every.mesh.positions.data(),
+                           sizeof(Real) * rows.mesh.positions.size()));
+  std::printf("[ rows ] skirt, is-cpu maps per frame: %.2f ms with the cloth's rows, %.2f ms with every row\n",
+              rows.collider_update_ms / double(rows.frames), every.collider_update_ms / double(every.frames));
+}
+
 // rk45 moves points by more than h v_end (its drift): the limits, seam caps and the response must see that
 // displacement, or the seams fling vertices off (it diverged at iteration 98 when they did not)
 TEST(Runner, Rk45SewsAndDrapesTheSkirtWithoutDiverging) {

@@ -144,6 +144,59 @@ TEST(GlMaps, SameAsCpuWithPeeledLayers) {
   }
 }
 
+// MapSet::limit_rows: the rows a region spans are the full maps' (every view, peeled layers too), the others empty
+void expect_rows_of_region(const MapSet& full, const MapSet& part, const Box3& region, const char* what) {
+  const MapFrame& f = full.frame;
+  long drawn = 0;
+  for (int map = 0; map < f.map_count(); ++map) {
+    const int view = f.view_of(map), axis = MapFrame::row_axis(view);
+    for (int row = 0; row < f.size; ++row) {
+      const Real lo = f.origin(axis) + Real(row) * f.pixel, hi = lo + f.pixel;
+      const bool inside = hi > region.min[axis] && lo < region.max[axis];
+      const bool listed =
+          row >= part.row_first[static_cast<std::size_t>(view)] && row <= part.row_last[static_cast<std::size_t>(view)];
+      EXPECT_TRUE(listed || !inside) << what << ": map " << map << " row " << row << " in the region is not drawn";
+      for (int col = 0; col < f.size; ++col) {
+        const std::size_t i = full.index(map, col, row);
+        if (listed) {
+          drawn += part.mask[i] == MapSet::kBody;
+          ASSERT_EQ(part.mask[i], full.mask[i]) << what << " map " << map << " (" << col << ", " << row << ")";
+          ASSERT_EQ(part.z[i], full.z[i]) << what << " map " << map << " (" << col << ", " << row << ")";
+          ASSERT_EQ(part.normal_at(i), full.normal_at(i)) << what;
+        } else {
+          ASSERT_NE(part.mask[i], MapSet::kBody) << what << " map " << map << " (" << col << ", " << row << ")";
+        }
+      }
+    }
+  }
+  EXPECT_GT(drawn, 1000) << what;
+}
+
+TEST(ImageSpaceLayers, MapsOfARegionsRowsAreTheFullMapsThere) {
+  const BodyModel& model = test::test_body_model();
+  const BodyFrame body = model.rest();
+  Box3 region = bounding_box(body.positions);
+  region.max.y() = region.min.y() + 0.6f * region.size().y();  // from the soles to the hips: a skirt's rows
+  region.min.y() += 0.3f * region.size().y();
+  region.max.z() = region.min.z() + 0.5f * region.size().z();  // the top and bottom views' rows: the back half
+  for (const std::string renderer : {"cpu", "gl"}) {
+    if (renderer == "gl" && !test::gl_unavailable().empty()) continue;
+    ColliderOptions o;
+    o.views = 6;
+    o.layers = 3;
+    o.side_layer = false;
+    const auto full = renderer == "gl" ? make_gl_map_renderer() : make_cpu_map_renderer();
+    const auto part = renderer == "gl" ? make_gl_map_renderer() : make_cpu_map_renderer();
+    MapSet a, b;
+    for (MapSet* m : {&a, &b})
+      m->reset(make_map_frame(bounding_box(body.positions), o), o.float_maps, body.moving, o.max_speed);
+    b.limit_rows(region);
+    full->render(body, a);
+    part->render(body, b);
+    expect_rows_of_region(a, b, region, renderer.c_str());
+  }
+}
+
 TEST(ImageSpaceLayers, BadLayerCountsAreRejected) {
   for (int layers : {0, -1, 9}) {
     ColliderOptions o;

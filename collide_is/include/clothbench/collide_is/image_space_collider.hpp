@@ -2,6 +2,7 @@
 /// The image-space colliders of the papers (dressing section 5, walking section 4): a point
 /// collides when it lies between the front and back depth surfaces of the body, within tol.
 #include <memory>
+#include <optional>
 
 #include "clothbench/collide_is/map_set.hpp"
 #include "clothbench/sim/collider.hpp"
@@ -73,6 +74,9 @@ class ImageSpaceCollider final : public Collider {
   std::string device() const override;
   void set_body(const BodyFrame& body) override;
   void update_body(const BodyFrame& body) override;
+  /// The maps of the next renders draw only the rows `region` spans (MapSet::limit_rows); a point outside the
+  /// region may be answered as if no body were there.
+  void set_query_region(const Box3& region) override { region_ = region; }
   void query(PointsView points, ContactsOut out) override;
   CollideStats stats() const override { return stats_; }
   /// The current maps (empty before set_body).
@@ -88,6 +92,7 @@ class ImageSpaceCollider final : public Collider {
   DepthTest test_;
   ViewRule rule_;
   MapSet maps_;
+  std::optional<Box3> region_;  // set_query_region's
   int vertex_count_ = 0;
   CollideStats stats_;
 };

@@ -121,6 +121,9 @@ struct MapSet {
   std::vector<float> velocity;     ///< float maps with velocity: xyz + 1 [m/s] (4 x maps x size^2)
   std::vector<std::uint8_t> normal8;  ///< 8-bit maps: RGBA, RGB = 0.5 n + 0.5 (dressing Eq. 6)
   std::vector<std::uint8_t> velocity8;  ///< 8-bit maps: RGBA, RGB = 0.5 v / maxv + 0.5 (walking Eq. 9)
+  /// The rows each view (and its peeled layers) draws and reads back, first and last: every row after reset();
+  /// limit_rows() narrows them to a region the queries come from. Rows outside are left empty.
+  std::array<int, 6> row_first{}, row_last{};
 
   /// Pixels per view.
   std::size_t view_pixels() const { return static_cast<std::size_t>(frame.size) * frame.size; }
@@ -145,8 +148,12 @@ struct MapSet {
       if (has_velocity) std::copy_n(&velocity8[4 * from], 4, &velocity8[4 * to]);
     }
   }
-  /// Sizes every array for `frame` and the encoding, clearing z to +-inf and the mask to kEmpty.
+  /// Sizes every array for `frame` and the encoding, clearing z to +-inf and the mask to kEmpty; every row drawn.
   void reset(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv);
+  /// Draws only the rows of each view that `region` spans (each view's row axis, a pixel more each way): the
+  /// maps are then the full maps in those rows and empty in the others (a region that misses a view leaves it
+  /// empty). For a caller whose queries all come from within `region` (ImageSpaceCollider::set_query_region).
+  void limit_rows(const Box3& region);
 };
 
 /// Adds the silhouette layer of dressing 5.4: every empty pixel with a body pixel among its 8

@@ -72,6 +72,8 @@ struct ColliderOptions {
   int threads = 1;              ///< object space: worker threads (embree)
   bool coherent = true;         ///< object space: each point's bound and closest triangle carried
                                 ///< between queries (false: every point searched from scratch)
+  Real query_margin_mm = 100;   ///< image space, moving bodies: the runner asks for the map rows that the cloth's
+                                ///< bounding box grown by this spans (set_query_region) [mm]; 0: every row
   Real voxel_size = 0.002f;     ///< vdb: voxel edge of the body's signed distance field [m]
   bool face_normals = false;    ///< fcl, embree, brute: respond along the closest triangle's face normal (the
                                 ///< dressing paper's object space, section 7) instead of interpolated vertex normals
@@ -96,6 +98,10 @@ class Collider {
   virtual void set_body(const BodyFrame& body) = 0;
   /// Each animation frame: re-render maps or refit the BVH. Same topology as set_body.
   virtual void update_body(const BodyFrame& body) = 0;
+  /// A hint for the next update_body calls: the queries come from within `region` (the cloth's box, grown by what
+  /// it can move in a frame). A collider may skip work for the body outside it (image space draws only the map
+  /// rows it spans) and then answer a point outside it as if no body were there. Default: ignored.
+  virtual void set_query_region(const Box3& region) { (void)region; }
   /// Hot path: one Contact per point. Never throws; NaN points are counted as degenerate.
   virtual void query(PointsView points, ContactsOut out) = 0;
   /// Cumulative timings and counts since construction.
