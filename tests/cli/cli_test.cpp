@@ -121,6 +121,36 @@ TEST_F(Cli, MapsWithoutOpenGlUseTheCpuRendererAndNameTheMissingOption) {
 #endif
 }
 
+// maps --renderer egl names the device it drew on and draws is-gl's pictures; a run with is-egl names it too
+TEST_F(Cli, MapsAndRunsThroughEglNameTheirDevice) {
+#ifndef CLOTHBENCH_WITH_EGL
+  GTEST_SKIP() << "built without CLOTHBENCH_WITH_EGL";
+#else
+  if (!fs::exists(clothbench::kDebianHumanBody)) GTEST_SKIP() << clothbench::kDebianHumanBody << " missing";
+  const std::string log = (dir_ / "log").string();
+  const int rc = clothbench("maps " + std::string(clothbench::kDebianHumanBody) + " --size 64 --renderer egl --png " +
+                                (dir_ / "egl").string(),
+                            log);
+  if (rc == 1 && read(log).find("no OpenGL context through EGL") != std::string::npos)
+    GTEST_SKIP() << "no EGL context here: " << read(log);
+  ASSERT_EQ(rc, 0) << read(log);
+  EXPECT_NE(read(log).find("egl: EGL "), std::string::npos) << read(log);
+  EXPECT_TRUE(fs::exists(dir_ / "egl" / "human_rest_depth.png"));
+  const std::string json = (dir_ / "r.json").string();
+  ASSERT_EQ(clothbench("run " + std::string(CLOTHBENCH_SOURCE_DIR) +
+                           "/scenes/walking/tablecloth_sphere.toml --collider is-egl --quiet --set garment.vertices=64 "
+                           "--set stop.drape_max_s=0.02 --set body.move_s=0.02 --json " +
+                           json,
+                       log),
+            0)
+      << read(log);
+  EXPECT_NE(read(log).find("device: EGL "), std::string::npos) << read(log);
+  std::ifstream in(json);
+  const auto doc = nlohmann::json::parse(in);
+  EXPECT_EQ(doc["benchmarks"][0]["device"].get<std::string>().rfind("EGL ", 0), 0u) << doc["benchmarks"][0];
+#endif
+}
+
 // a result file of `reps` repetitions of row NAME around time t (ms; +-1 % apart, as repetitions are)
 void write_runs(const std::string& path, const std::string& name, double t, int reps, const std::string& hash = "") {
   nlohmann::json rows = nlohmann::json::array();
