@@ -95,7 +95,9 @@ std::string describe_device(EGLDeviceEXT device, int index, int count) {
 class EglGlContext final : public GlContext {
  public:
   EglGlContext() {
-    std::string why = open_device();
+    const char* pick = std::getenv("CLOTHBENCH_EGL_DEVICE");
+    const bool surfaceless_only = pick && std::string(pick) == "surfaceless";
+    std::string why = surfaceless_only ? std::string("CLOTHBENCH_EGL_DEVICE=surfaceless") : open_device(pick);
     if (made_.context == EGL_NO_CONTEXT) why += "; " + open_surfaceless();
     if (made_.context == EGL_NO_CONTEXT) throw std::runtime_error("is-egl: no OpenGL context through EGL: " + why);
   }
@@ -114,9 +116,9 @@ class EglGlContext final : public GlContext {
   std::string provider() const override { return provider_; }
 
  private:
-  // EGL_EXT_platform_device: CLOTHBENCH_EGL_DEVICE=N picks device N, else the first that is not Mesa's software
-  // device, else the software one; returns why none worked
-  std::string open_device() {
+  // EGL_EXT_platform_device: `pick` (CLOTHBENCH_EGL_DEVICE) N picks device N, else the first that is not Mesa's
+  // software device, else the software one; returns why none worked
+  std::string open_device(const char* pick) {
     const auto query_devices = egl_function<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
     const auto platform_display = egl_function<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
     const auto query_string = egl_function<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
@@ -126,12 +128,14 @@ class EglGlContext final : public GlContext {
     if (!query_devices(static_cast<EGLint>(devices.size()), devices.data(), &count) || count < 1)
       return "eglQueryDevicesEXT lists no device";
     std::vector<int> order;
-    if (const char* pick = std::getenv("CLOTHBENCH_EGL_DEVICE")) {
-      const int n = std::atoi(pick);
-      if (n < 0 || n >= count)
+    if (pick) {
+      char* end = nullptr;
+      const long n = std::strtol(pick, &end, 10);
+      if (end == pick || *end != '\0' || n < 0 || n >= count)
         throw std::runtime_error("is-egl: CLOTHBENCH_EGL_DEVICE=" + std::string(pick) + " but EGL lists " +
-                                 std::to_string(count) + " device(s), 0.." + std::to_string(count - 1));
-      order.push_back(n);
+                                 std::to_string(count) + " device(s): give 0.." + std::to_string(count - 1) +
+                                 " or surfaceless");
+      order.push_back(static_cast<int>(n));
     } else {
       const auto software = [&](int i) {
         return query_string && has_extension(query_string(devices[static_cast<std::size_t>(i)], EGL_EXTENSIONS),

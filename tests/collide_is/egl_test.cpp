@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include "clothbench/collide_is/egl_collider.hpp"
@@ -96,14 +97,38 @@ TEST(EglMaps, TakesTurnsWithOsmesaInOneProcess) {
 
 TEST(EglMaps, ADeviceOutOfRangeIsNamed) {
   CLOTHBENCH_REQUIRE_EGL();
-  setenv("CLOTHBENCH_EGL_DEVICE", "99", 1);
-  try {
-    make_egl_map_renderer();
-    ADD_FAILURE() << "device 99 accepted";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("CLOTHBENCH_EGL_DEVICE=99"), std::string::npos) << e.what();
+  for (const char* bad : {"99", "-1", "gpu"}) {
+    setenv("CLOTHBENCH_EGL_DEVICE", bad, 1);
+    try {
+      make_egl_map_renderer();
+      ADD_FAILURE() << "device " << bad << " accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("CLOTHBENCH_EGL_DEVICE=") + bad), std::string::npos) << e.what();
+    }
   }
   unsetenv("CLOTHBENCH_EGL_DEVICE");
+}
+
+// Mesa's surfaceless platform (the fallback where EGL lists no device) draws the same maps as the device
+TEST(EglMaps, SurfacelessPlatformDrawsTheSameMaps) {
+  CLOTHBENCH_REQUIRE_EGL();
+  setenv("CLOTHBENCH_EGL_DEVICE", "surfaceless", 1);
+  std::unique_ptr<MapRenderer> surfaceless;
+  try {
+    surfaceless = make_egl_map_renderer();
+  } catch (const std::runtime_error& e) {
+    unsetenv("CLOTHBENCH_EGL_DEVICE");
+    GTEST_SKIP() << "no surfaceless platform here: " << e.what();
+  }
+  unsetenv("CLOTHBENCH_EGL_DEVICE");
+  std::cout << "[ egl ] " << surfaceless->device() << "\n";
+  EXPECT_NE(surfaceless->device().find("surfaceless"), std::string::npos) << surfaceless->device();
+  const BodyModel& model = test::test_body_model();
+  ColliderOptions o;
+  o.views = 6;
+  o.layers = 3;
+  const auto device = make_egl_map_renderer();
+  expect_identical(render_maps(model.rest(), *surfaceless, o), render_maps(model.rest(), *device, o), "surfaceless");
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 /// is-egl (library clothbench::collide_is_egl, CMake option CLOTHBENCH_WITH_EGL): the image-space maps drawn
 /// by OpenGL in a context EGL makes without a window. EGL_EXT_platform_device first (CLOTHBENCH_EGL_DEVICE=N
 /// picks device N; otherwise the first that is not Mesa's software device, so a GPU where the driver lists
-/// one), else Mesa's surfaceless platform (EGL_MESA_platform_surfaceless). The library links libEGL only: every
+/// one), else Mesa's surfaceless platform (EGL_MESA_platform_surfaceless; CLOTHBENCH_EGL_DEVICE=surfaceless
+/// asks for it alone). The library links libEGL only: every
 /// GL call goes through eglGetProcAddress, so is-egl and is-gl (OSMesa) live in one process. The same shaders,
 /// FBO and read-back as is-gl (make_gl_map_renderer(context), gl_context.hpp).
 #include <memory>
