@@ -95,10 +95,15 @@ std::string describe_device(EGLDeviceEXT device, int index, int count) {
 class EglGlContext final : public GlContext {
  public:
   EglGlContext() {
+    // a device asked for by CLOTHBENCH_EGL_DEVICE is that device or an error, never a fallback
     const char* pick = std::getenv("CLOTHBENCH_EGL_DEVICE");
-    const bool surfaceless_only = pick && std::string(pick) == "surfaceless";
-    std::string why = surfaceless_only ? std::string("CLOTHBENCH_EGL_DEVICE=surfaceless") : open_device(pick);
-    if (made_.context == EGL_NO_CONTEXT) why += "; " + open_surfaceless();
+    std::string why;
+    if (pick && std::string(pick) == "surfaceless") {
+      why = open_surfaceless();
+    } else {
+      why = open_device(pick);
+      if (made_.context == EGL_NO_CONTEXT && !pick) why += "; " + open_surfaceless();
+    }
     if (made_.context == EGL_NO_CONTEXT) throw std::runtime_error("is-egl: no OpenGL context through EGL: " + why);
   }
 

@@ -3,9 +3,9 @@
 /// by OpenGL in a context EGL makes without a window. EGL_EXT_platform_device first (CLOTHBENCH_EGL_DEVICE=N
 /// picks device N; otherwise the first that is not Mesa's software device, so a GPU where the driver lists
 /// one), else Mesa's surfaceless platform (EGL_MESA_platform_surfaceless; CLOTHBENCH_EGL_DEVICE=surfaceless
-/// asks for it alone). The library links libEGL only: every
-/// GL call goes through eglGetProcAddress, so is-egl and is-gl (OSMesa) live in one process. The same shaders,
-/// FBO and read-back as is-gl (make_gl_map_renderer(context), gl_context.hpp).
+/// asks for it alone). A device or platform asked for by CLOTHBENCH_EGL_DEVICE is used or is an error. The library
+/// links libEGL only: every GL call goes through eglGetProcAddress, so is-egl and is-gl (OSMesa) live in one process.
+/// The same shaders, FBO and read-back as is-gl (make_gl_map_renderer(context), gl_context.hpp).
 #include <memory>
 
 #include "clothbench/collide_is/map_set.hpp"
