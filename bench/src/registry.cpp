@@ -49,16 +49,12 @@ std::vector<Entry> entries() {
 #else
   e.push_back({{"is-gl", is_desc + "rendered with OpenGL (OSMesa)", false, "CLOTHBENCH_WITH_GL"}, {}});
 #endif
+  const std::string egl_desc =
+      is_desc + "rendered with OpenGL in a windowless EGL context (a GPU where the driver offers one)";
 #ifdef CLOTHBENCH_HAS_EGL
-  e.push_back(
-      {{"is-egl", is_desc + "rendered with OpenGL in a windowless EGL context (a GPU where the driver offers one)",
-        true, "CLOTHBENCH_WITH_EGL"},
-       make_is_egl_collider});
+  e.push_back({{"is-egl", egl_desc, true, "CLOTHBENCH_WITH_EGL"}, make_is_egl_collider});
 #else
-  e.push_back(
-      {{"is-egl", is_desc + "rendered with OpenGL in a windowless EGL context (a GPU where the driver offers one)",
-        false, "CLOTHBENCH_WITH_EGL"},
-       {}});
+  e.push_back({{"is-egl", egl_desc, false, "CLOTHBENCH_WITH_EGL"}, {}});
 #endif
   e.push_back({{"is-cpu", is_desc + "from our CPU rasteriser", true, ""}, make_is_cpu_collider});
   const std::string fcl_desc = "object space: FCL kIOS tree, closest point per query (temporal coherence), refit";

@@ -7,6 +7,7 @@
 
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/report.hpp"
+#include "clothbench/collide_is/map_set.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/history.hpp"
 #include "clothbench/experiments/html_report.hpp"
@@ -60,17 +61,16 @@ std::string since_previous(ExperimentContext& ctx, const std::vector<std::pair<s
 std::string opengl_devices() {
   std::string list;
   bool gpu = false;
+  const auto built = available_colliders();
   for (const std::string name : {"is-gl", "is-egl"}) {
-    const auto built = available_colliders();
     if (std::find(built.begin(), built.end(), name) == built.end()) continue;
-    std::string device;
     try {
-      device = make_collider(name)->device();
+      const std::string device = make_collider(name)->device();
+      gpu = gpu || !cpu_device(device);
+      list += "- `" + name + "`: " + device + "\n";
     } catch (const std::exception& e) {
-      device = std::string("no context: ") + e.what();
+      list += "- `" + name + "`: no context: " + std::string(e.what()) + "\n";
     }
-    gpu = gpu || (device.find("llvmpipe") == std::string::npos && device.rfind("no context", 0) != 0);
-    list += "- `" + name + "`: " + device + "\n";
   }
   if (list.empty()) return {};
   return std::string("OpenGL devices (image space; every JSON row that used one names it as `device`)") +

@@ -116,7 +116,6 @@ class EglGlContext final : public GlContext {
     return eglMakeCurrent(made_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, made_.context) == EGL_TRUE;
   }
   void* proc(const char* name) override { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
-  std::string who() const override { return "is-egl"; }
   std::string renderer_name() const override { return "egl"; }
   std::string provider() const override { return provider_; }
 

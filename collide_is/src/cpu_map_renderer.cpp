@@ -70,13 +70,10 @@ class CpuMapRenderer final : public MapRenderer {
     // window coordinates and z-buffer depth of every view, as GL computes them
     project(body, maps.frame);
     // z-buffer cleared to the far plane in the rows drawn, turned into geometry space at the end (as GL's read-back)
-    const std::size_t n = maps.view_pixels(), size = static_cast<std::size_t>(maps.frame.size);
     for (int map = 0; map < maps.frame.map_count(); ++map) {
-      const auto v = static_cast<std::size_t>(maps.frame.view_of(map));
-      if (maps.row_first[v] > maps.row_last[v]) continue;
-      const auto at = maps.z.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(map) * n);
-      std::fill(at + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(maps.row_first[v]) * size),
-                at + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(maps.row_last[v] + 1) * size), 1.0f);
+      const auto [begin, end] = maps.drawn(map);
+      std::fill(maps.z.begin() + static_cast<std::ptrdiff_t>(begin), maps.z.begin() + static_cast<std::ptrdiff_t>(end),
+                1.0f);
     }
     // one pass over the triangles, every view
     for (Eigen::Index t = 0; t < body.triangles.cols(); ++t) {
@@ -282,5 +279,9 @@ class CpuMapRenderer final : public MapRenderer {
 }  // namespace
 
 std::unique_ptr<MapRenderer> make_cpu_map_renderer() { return std::make_unique<CpuMapRenderer>(); }
+
+bool cpu_device(std::string_view device) {
+  return device.find("llvmpipe") != std::string_view::npos || device == CpuMapRenderer().device();
+}
 
 }  // namespace clothbench

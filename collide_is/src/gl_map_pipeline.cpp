@@ -58,7 +58,7 @@ void main() {
 class GlMapRenderer final : public MapRenderer {
  public:
   explicit GlMapRenderer(std::unique_ptr<GlContext> context)
-      : context_(std::move(context)), who_(context_->who()), name_(context_->renderer_name()) {
+      : context_(std::move(context)), who_("is-" + context_->renderer_name()), name_(context_->renderer_name()) {
     if (!context_->make_current()) throw std::runtime_error(who_ + ": the OpenGL context cannot be made current");
     gl_ = GlApi::load([this](const char* f) { return context_->proc(f); }, who_);
     set_up();
@@ -270,18 +270,17 @@ class GlMapRenderer final : public MapRenderer {
   // z-buffer values and colours of view `view`'s rows the maps draw into map `map` (raw z-buffer values:
   // depth_from_zbuffer turns them into coordinates once every layer is in; the other rows stay empty)
   void read_back(MapSet& maps, int view, int map) {
-    const std::size_t at = static_cast<std::size_t>(map) * maps.view_pixels();
-    const int first = maps.row_first[static_cast<std::size_t>(view)],
-              last = maps.row_last[static_cast<std::size_t>(view)];
-    if (first > last) return;
-    const std::size_t from = static_cast<std::size_t>(first) * size_;
-    const GLint y = view * size_ + first;
-    const GLsizei rows = last - first + 1;
+    const auto [begin, end] = maps.drawn(map);
+    if (begin == end) return;
+    const auto size = static_cast<std::size_t>(size_);
+    const GLint y =
+        view * size_ + static_cast<GLint>((begin - static_cast<std::size_t>(map) * maps.view_pixels()) / size);
+    const auto rows = static_cast<GLsizei>((end - begin) / size);
     gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_.ReadPixels(0, y, size_, rows, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data() + at + from);
+    gl_.ReadPixels(0, y, size_, rows, GL_DEPTH_COMPONENT, GL_FLOAT, maps.z.data() + begin);
     const GLenum type = maps.float_maps ? GL_FLOAT : GL_UNSIGNED_BYTE;
     const auto colours = [&](std::vector<float>& floats, std::vector<std::uint8_t>& bytes) {
-      return maps.float_maps ? static_cast<void*>(floats.data() + 4 * (at + from)) : bytes.data() + 4 * (at + from);
+      return maps.float_maps ? static_cast<void*>(floats.data() + 4 * begin) : bytes.data() + 4 * begin;
     };
     gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
     gl_.ReadPixels(0, y, size_, rows, GL_RGBA, type, colours(maps.normal, maps.normal8));

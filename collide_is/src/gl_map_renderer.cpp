@@ -13,7 +13,6 @@ class OsmesaGlContext final : public GlContext {
   OsmesaGlContext() : context_("is-gl") {}
   bool make_current() override { return context_.make_current(); }
   void* proc(const char* name) override { return osmesa::proc_address(name); }
-  std::string who() const override { return "is-gl"; }
   std::string renderer_name() const override { return "gl"; }
   std::string provider() const override { return "OSMesa"; }
 

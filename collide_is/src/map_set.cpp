@@ -134,6 +134,13 @@ void MapSet::limit_rows(const Box3& region) {
   }
 }
 
+std::pair<std::size_t, std::size_t> MapSet::drawn(int map) const {
+  const auto v = static_cast<std::size_t>(frame.view_of(map));
+  const std::size_t at = static_cast<std::size_t>(map) * view_pixels(), size = static_cast<std::size_t>(frame.size);
+  if (row_first[v] > row_last[v]) return {at, at};
+  return {at + static_cast<std::size_t>(row_first[v]) * size, at + static_cast<std::size_t>(row_last[v] + 1) * size};
+}
+
 Vec3 MapSet::raw_normal_at(std::size_t i) const {
   if (float_maps) return Vec3(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2]);
   // dressing Eq. 7: n = 2 (R, G, B) - 1
@@ -203,7 +210,6 @@ int side_layer_rings(const ColliderOptions& options, Real pixel) {
 
 void depth_from_zbuffer(MapSet& maps) {
   const MapFrame& f = maps.frame;
-  const std::size_t n = maps.view_pixels();
   const float inf = std::numeric_limits<float>::infinity();
   for (int map = 0; map < f.map_count(); ++map) {
     const int view = f.view_of(map);
@@ -212,10 +218,7 @@ void depth_from_zbuffer(MapSet& maps) {
     const int axis = MapFrame::view_axis(view);
     const Real lo = f.plane_min(axis), hi = f.plane_max(axis);
     // the rows drawn (the others keep reset()'s empty values)
-    const auto v = static_cast<std::size_t>(view);
-    if (maps.row_first[v] > maps.row_last[v]) continue;
-    const std::size_t begin = static_cast<std::size_t>(map) * n + static_cast<std::size_t>(maps.row_first[v]) * f.size;
-    const std::size_t end = static_cast<std::size_t>(map) * n + static_cast<std::size_t>(maps.row_last[v] + 1) * f.size;
+    const auto [begin, end] = maps.drawn(map);
     for (std::size_t i = begin; i < end; ++i) {
       const float zbuf = maps.z[i];
       // nothing drawn: the comparison of Eq. 9 must fail there

@@ -7,6 +7,7 @@
 #include "clothbench/bench/oracle.hpp"
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/report.hpp"
+#include "clothbench/collide_is/map_set.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
@@ -183,7 +184,7 @@ std::string renderer_table(ExperimentContext& ctx) {
   for (const auto& r : renderers) header.push_back(r + " [ms/frame]");
   MarkdownTable t(header);
   std::string devices;
-  bool software = true;  // every OpenGL renderer drew on the CPU (Mesa's llvmpipe)
+  bool software = true;  // every renderer drew on the CPU (Mesa's llvmpipe or ours)
   for (const Setting& s : settings) {
     std::vector<std::string> row{std::to_string(s.size) + "^2",
                                  std::to_string(s.views) + " x " + std::to_string(s.layers),
@@ -199,7 +200,7 @@ std::string renderer_table(ExperimentContext& ctx) {
       for (int k = 0; k < frames; ++k) c->update_body(k % 2 ? a : b);
       const double ms = c->stats().update_ms / double(c->stats().updates);
       row.push_back(num(ms, 2));
-      if (name != "is-cpu" && c->device().find("llvmpipe") == std::string::npos) software = false;
+      software = software && cpu_device(c->device());
       if (s.size == 320 && s.views == 2 && s.floats)
         devices += "- `" + name + "`: " + (c->device().empty() ? "-" : c->device()) + "\n";
       ctx.add_row({{"name", "colliders/maps/" + name + "/" + row[0] + "/" + std::to_string(s.views) + "x" +

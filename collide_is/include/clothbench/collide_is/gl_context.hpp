@@ -19,8 +19,7 @@ class GlContext {
   virtual bool make_current() = 0;
   /// The address of OpenGL function `name` ("glDrawElements") from this context's provider, or null.
   virtual void* proc(const char* name) = 0;
-  /// Who reports errors ("is-gl", "is-egl") and the renderer's name ("gl", "egl").
-  virtual std::string who() const = 0;
+  /// The renderer's name ("gl", "egl"); its errors are reported as "is-" + the name.
   virtual std::string renderer_name() const = 0;
   /// How the context was made, for the device string ("OSMesa", "EGL device 0 (EGL_MESA_device_software)").
   virtual std::string provider() const = 0;

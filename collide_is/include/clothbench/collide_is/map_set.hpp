@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "clothbench/sim/body_frame.hpp"
@@ -154,6 +155,8 @@ struct MapSet {
   /// maps are then the full maps in those rows and empty in the others (a region that misses a view leaves it
   /// empty). For a caller whose queries all come from within `region` (ImageSpaceCollider::set_query_region).
   void limit_rows(const Box3& region);
+  /// The elements [first, second) of map `map`'s rows that are drawn (first == second: none).
+  std::pair<std::size_t, std::size_t> drawn(int map) const;
 };
 
 /// Adds the silhouette layer of dressing 5.4: every empty pixel with a body pixel among its 8
@@ -188,6 +191,9 @@ class MapRenderer {
   /// view and peeled layer, mask kBody or kEmpty. Does not add the side layer. Never throws once set up.
   virtual void render(const BodyFrame& body, MapSet& maps) = 0;
 };
+
+/// Whether a MapRenderer::device() names a renderer on the CPU (Mesa's llvmpipe, our rasteriser), not a GPU.
+bool cpu_device(std::string_view device);
 
 /// OpenGL via OSMesa (llvmpipe): one off-screen context with its own small client buffer, drawing as
 /// make_gl_map_renderer(context) (gl_context.hpp). Throws std::runtime_error when no context can be created or a
