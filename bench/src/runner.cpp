@@ -368,12 +368,12 @@ std::string describe_vertex(const Simulator& sim, int v, double depth_mm, double
   return out + text;
 }
 
-// the oracle at one animation frame: a sample, and where the deepest vertex is when this frame is the deepest yet
-void measure_frame(const BodyFrame& frame, const Simulator& sim, double t, RunResult& r) {
+// the oracle at one animation frame (its strain beside): a sample, and where the deepest vertex is when this frame
+// is the deepest yet
+void measure_frame(const BodyFrame& frame, const Simulator& sim, const StrainStats& strain, double t, RunResult& r) {
   const Oracle oracle(frame);
   Accuracy a = oracle.measure(sim.positions());
   oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
-  const StrainStats strain = sim.strain();
   if (a.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm))
     r.depth_max_where = describe_vertex(sim, static_cast<int>(a.deepest), a.depth_max_mm, t);
   r.frame_samples.push_back({t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});
@@ -409,10 +409,11 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     const double t = source.start() + double(f) * frame_dt;
     alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, margin, frame, r.skinning_ms);
     ++r.frames;
-    r.animate_strain_max = std::max(r.animate_strain_max, double(sim.strain().max));
-    Stopwatch outside;  // the oracle and the caller's callback are not the animation's time
+    Stopwatch outside;  // the strain, the oracle and the caller's callback are not the animation's time
     const double outside_cpu = thread_cpu_ms();
-    if (options.measure_frames && alive) measure_frame(frame, sim, t, r);
+    const StrainStats strain = sim.strain();
+    r.animate_strain_max = std::max(r.animate_strain_max, double(strain.max));
+    if (options.measure_frames && alive) measure_frame(frame, sim, strain, t, r);
     if (options.on_frame) options.on_frame(f, t, frame, sim);
     not_animation_ms += outside.ms();
     not_animation_cpu_ms += thread_cpu_ms() - outside_cpu;
