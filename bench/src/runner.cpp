@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <memory>
 #include <random>
 #include <vector>
@@ -320,23 +321,65 @@ double estimate_seconds(const Simulator& sim, Collider& dresser, Collider& colli
          1e3;
 }
 
+// the next body frame, evaluated and handed to the collider's prepare_body on a second thread while the cloth steps
+// through the current one (body.prepare_ahead): the body's motion is prescribed, so nothing of it waits on the cloth
+struct FrameAhead {
+  BodyFrame frame;
+  double t = -1;           // animation time of `frame`; < 0: none under way
+  double skinning_ms = 0;  // its evaluation's time (on the second thread)
+  bool prepared = false;   // the collider prepared its update (else update_body does the work, in turn)
+  std::future<void> job;
+
+  void start(const BodySource& source, Collider& collider, double at) {
+    t = at;
+    job = std::async(std::launch::async, [this, &source, &collider] {
+      Stopwatch skin;
+      source.frame_into(frame, t);
+      skinning_ms = skin.ms();
+      prepared = collider.prepare_body(frame);
+    });
+  }
+  void wait() {
+    if (job.valid()) job.get();
+  }
+};
+
+// the queries of a frame come from the cloth's box grown by what it can move in `frames` frames (image space then
+// draws only the map rows that spans)
+void set_region(Collider& collider, const Simulator& sim, Real region_margin, int frames) {
+  if (!(region_margin > 0)) return;
+  Box3 region = bounding_box(sim.positions());
+  region.min.array() -= Real(frames) * region_margin, region.max.array() += Real(frames) * region_margin;
+  collider.set_query_region(region);
+}
+
 // one body frame: evaluate (timed), update the collider, move attachments, then `steps` cloth steps spread over
 // the frame; with body.move_between_frames each step sees the body where it was at the step's time
-// (BodyBetweenFrames), else the frame's end pose throughout
+// (BodyBetweenFrames), else the frame's end pose throughout. With `ahead`, a frame at t prepared during the last
+// one is taken from it, and the frame at `t_next` (> 0) is prepared while this one's steps run (its map rows from
+// the cloth's box now, grown by two frames' margin)
 bool advance_frame(const BodySource& source, double t, double frame_dt, long steps, Simulator& sim,
-                   BodyBetweenFrames& collider, bool between, Real region_margin, BodyFrame& frame,
-                   double& skinning_ms) {
-  Stopwatch skin;
-  source.frame_into(frame, t);
-  skinning_ms += skin.ms();
-  // the queries of this frame come from the cloth's box grown by what it can move in a frame (image space then
-  // draws only the map rows that spans)
-  if (region_margin > 0) {
-    Box3 region = bounding_box(sim.positions());
-    region.min.array() -= region_margin, region.max.array() += region_margin;
-    collider.set_query_region(region);
+                   BodyBetweenFrames& collider, bool between, Real region_margin, BodyFrame& frame, double& skinning_ms,
+                   FrameAhead* ahead, double t_next) {
+  // a frame prepared ahead is always the next one asked for (else the collider would make stale maps current)
+  if (ahead && ahead->t >= 0 && ahead->t != t)
+    throw std::logic_error("advance_frame: the frame prepared ahead is not next");
+  if (ahead && ahead->t == t) {
+    std::swap(frame, ahead->frame);
+    ahead->t = -1;
+    skinning_ms += ahead->skinning_ms;
+    if (!ahead->prepared) set_region(collider, sim, region_margin, 1);
+  } else {
+    Stopwatch skin;
+    source.frame_into(frame, t);
+    skinning_ms += skin.ms();
+    set_region(collider, sim, region_margin, 1);
   }
   collider.update_body(frame);
+  if (ahead && t_next > 0) {
+    set_region(collider, sim, region_margin, 2);
+    ahead->start(source, collider, t_next);
+  }
   const bool attached = !sim.mesh().attached.empty();
   if (attached && !between) sim.follow_attachments(frame);
   bool alive = true;
@@ -349,6 +392,7 @@ bool advance_frame(const BodySource& source, double t, double frame_dt, long ste
     if (attached && between) sim.follow_attachments(frame, tau + sim.dt());
     alive = sim.step();
   }
+  if (ahead) ahead->wait();
   return alive;
 }
 
@@ -394,9 +438,14 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   const Real skin = Real(scene.body.skin_mm * 1e-3);
   const Real margin = Real(scene.collider_options.query_margin_mm * 1e-3);
   BodyBetweenFrames dresser_between(dresser, tol, skin), collider_between(collider, tol, skin);
+  FrameAhead lead_ahead, ahead;
+  FrameAhead* const lead_pipe = scene.body.prepare_ahead ? &lead_ahead : nullptr;
+  FrameAhead* const pipe = scene.body.prepare_ahead ? &ahead : nullptr;
+  const auto lead_in_time = [&](long f) { return source.dress_time() + double(f) * frame_dt; };
+  const auto window_time = [&](long f) { return source.start() + double(f) * frame_dt; };
   for (long f = 1; f <= lead_in && alive; ++f) {
-    alive = advance_frame(source, source.dress_time() + double(f) * frame_dt, frame_dt, steps, sim, dresser_between,
-                          between, margin, frame, unmeasured_ms);
+    alive = advance_frame(source, lead_in_time(f), frame_dt, steps, sim, dresser_between, between, margin, frame,
+                          unmeasured_ms, lead_pipe, f < lead_in ? lead_in_time(f + 1) : 0);
     progress.report("animate (lead-in): frame %ld of %ld", f, lead_in);
   }
   collider.update_body(frame);
@@ -406,8 +455,10 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   const double update_before = collider.stats().update_ms;
   double not_animation_ms = 0, not_animation_cpu_ms = 0;
   for (long f = 1; f <= frames && alive; ++f) {
-    const double t = source.start() + double(f) * frame_dt;
-    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, margin, frame, r.skinning_ms);
+    const double t = window_time(f);
+    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, margin, frame, r.skinning_ms,
+                          pipe, f < frames ? window_time(f + 1) : 0);
+    r.prepared_frames += pipe && f < frames && ahead.prepared;
     ++r.frames;
     Stopwatch outside;  // the strain, the oracle and the caller's callback are not the animation's time
     const double outside_cpu = thread_cpu_ms();
@@ -543,7 +594,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
     animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options, r);
   r.divergence = sim->divergence();
   const CollideStats stats = collider->stats();
-  r.threads = stats.threads;
+  r.threads = r.prepared_frames > 0 ? std::max(stats.threads, 2) : stats.threads;
   r.device = collider->device();
   const std::int64_t points = stats.points - before.points, searches = stats.searches - before.searches;
   r.search_share = points > 0 ? double(searches) / double(points) : 0;

@@ -27,32 +27,54 @@ std::string_view ImageSpaceCollider::name() const {
 
 std::string ImageSpaceCollider::device() const { return renderer_->device(); }
 
-void ImageSpaceCollider::render(const BodyFrame& body) {
+void ImageSpaceCollider::render(const BodyFrame& body, MapSet& maps) const {
   // cameras on this frame's bounding box, velocity maps only for moving bodies
-  maps_.reset(make_map_frame(bounding_box(body.positions), options_), options_.float_maps, body.moving,
-              options_.max_speed);
-  if (region_) maps_.limit_rows(*region_);
-  renderer_->render(body, maps_);
-  if (const int rings = side_layer_rings(options_, maps_.frame.pixel)) add_side_layer(maps_, rings);
+  maps.reset(make_map_frame(bounding_box(body.positions), options_), options_.float_maps, body.moving,
+             options_.max_speed);
+  if (region_) maps.limit_rows(*region_);
+  renderer_->render(body, maps);
+  if (const int rings = side_layer_rings(options_, maps.frame.pixel)) add_side_layer(maps, rings);
 }
 
 void ImageSpaceCollider::set_body(const BodyFrame& body) {
   validate_body(body, std::string(name()) + " set_body");
   Stopwatch watch;
-  render(body);
+  render(body, maps_);
   vertex_count_ = body.vertex_count();
+  prepared_ = false;
   stats_.setup_ms += watch.ms();
 }
 
-void ImageSpaceCollider::update_body(const BodyFrame& body) {
+void ImageSpaceCollider::check_update(const BodyFrame& body) const {
   if (vertex_count_ == 0) throw std::logic_error(std::string(name()) + ": update_body before set_body");
   if (body.vertex_count() != vertex_count_)
     throw std::invalid_argument(std::string(name()) + ": update_body with a different vertex count");
+}
+
+bool ImageSpaceCollider::prepare_body(const BodyFrame& body) {
+  check_update(body);
+  // a static body keeps the maps of set_body; a GL context draws on its own thread only
+  if ((!body.moving && !maps_.has_velocity) || !renderer_->any_thread()) return false;
+  Stopwatch watch;
+  render(body, next_);
+  prepared_ = true;
+  prepared_ms_ = watch.ms();
+  return true;
+}
+
+void ImageSpaceCollider::update_body(const BodyFrame& body) {
+  check_update(body);
   ++stats_.updates;
+  if (prepared_) {
+    std::swap(maps_, next_);
+    prepared_ = false;
+    stats_.update_ms += prepared_ms_;
+    return;
+  }
   // a static body keeps the maps of set_body
   if (!body.moving && !maps_.has_velocity) return;
   Stopwatch watch;
-  render(body);
+  render(body, maps_);
   stats_.update_ms += watch.ms();
 }
 

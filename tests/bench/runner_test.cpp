@@ -138,6 +138,29 @@ TEST(Runner, MapsOfTheRowsTheClothSpansGiveTheSameRun) {
               rows.collider_update_ms / double(rows.frames), every.collider_update_ms / double(every.frames));
 }
 
+// body.prepare_ahead: the next frame skinned and its maps drawn on a second thread while the cloth steps through this
+// one; the same run bit for bit (lead-in and measured window), and the run says it used the second thread
+TEST(Runner, FramesPreparedAheadGiveTheSameRun) {
+  RunOptions quiet;
+  quiet.progress = false;
+  const auto run = [&](const char* ahead) {
+    return run_scene(load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/walking/skirt.toml",
+                                {"garment.vertices=200", "collider.name=is-cpu", "body.end_s=1.2",
+                                 std::string("body.prepare_ahead=") + ahead}),
+                     quiet);
+  };
+  const RunResult ahead = run("true"), serial = run("false");
+  ASSERT_FALSE(ahead.divergence);
+  EXPECT_EQ(serial.frames - 1, ahead.prepared_frames);  // every measured frame but the first
+  EXPECT_EQ(2, ahead.threads);
+  EXPECT_EQ(0, serial.prepared_frames);
+  EXPECT_EQ(1, serial.threads);
+  ASSERT_EQ(ahead.mesh.positions.size(), serial.mesh.positions.size());
+  EXPECT_EQ(0, std::memcmp(ahead.mesh.positions.data(), serial.mesh.positions.data(),
+                           sizeof(Real) * ahead.mesh.positions.size()));
+  EXPECT_EQ(ahead.final_body.positions, serial.final_body.positions);
+}
+
 // rk45 moves points by more than h v_end (its drift): the limits, seam caps and the response must see that
 // displacement, or the seams fling vertices off (it diverged at iteration 98 when they did not)
 TEST(Runner, Rk45SewsAndDrapesTheSkirtWithoutDiverging) {

@@ -9,6 +9,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -546,6 +547,50 @@ TEST(ImageSpaceCollider, MovingBodyIsReRenderedWithVelocitiesByEgl) {
   expect_opengl_velocities(make_is_egl_collider);
 }
 #endif
+
+// prepare_body draws the next frame's maps on another thread while the current ones answer; the next update_body
+// makes them current, the same maps as drawing them then
+TEST(ImageSpaceCollider, MapsPreparedOnAnotherThreadBecomeCurrentAtTheNextUpdate) {
+  BodyFrame s = make_sphere_body(Vec3(0, 0.5f, 0), 0.3f);
+  s.moving = true;
+  BodyFrame moved = s;
+  for (int v = 0; v < s.vertex_count(); ++v) moved.positions(0, v) += 0.05f, moved.velocities.col(v) = Vec3(1, 0, 0);
+  auto ahead = make_is_cpu_collider(ColliderOptions{}), in_turn = make_is_cpu_collider(ColliderOptions{});
+  ahead->set_body(s);
+  in_turn->set_body(s);
+  Points3 p(3, 1);
+  p.col(0) = Vec3(0.33f, 0.5f, 0.0f);  // outside the sphere, inside the moved one
+  std::vector<Contact> out(1);
+  bool prepared = false;
+  std::thread drawing([&] { prepared = ahead->prepare_body(moved); });
+  for (int i = 0; i < 100; ++i) {  // meanwhile the current maps answer
+    ahead->query(PointsView(p), ContactsOut{out.data(), out.size()});
+    ASSERT_FALSE(out[0].hit);
+  }
+  drawing.join();
+  ASSERT_TRUE(prepared);
+  ahead->query(PointsView(p), ContactsOut{out.data(), out.size()});
+  EXPECT_FALSE(out[0].hit);  // not current before update_body
+  ahead->update_body(moved);
+  in_turn->update_body(moved);
+  ahead->query(PointsView(p), ContactsOut{out.data(), out.size()});
+  EXPECT_TRUE(out[0].hit);
+  const auto& a = dynamic_cast<ImageSpaceCollider&>(*ahead).maps();
+  const auto& b = dynamic_cast<ImageSpaceCollider&>(*in_turn).maps();
+  EXPECT_EQ(a.z, b.z);
+  EXPECT_EQ(a.velocity, b.velocity);
+  EXPECT_EQ(ahead->stats().updates, 1);
+}
+
+// a GL context draws on the thread that made it: nothing is prepared, update_body draws
+TEST(ImageSpaceCollider, GlPreparesNothingAhead) {
+  CLOTHBENCH_REQUIRE_GL();
+  auto c = make_is_gl_collider(ColliderOptions{});
+  BodyFrame s = make_sphere_body(Vec3(0, 0.5f, 0), 0.3f);
+  s.moving = true;
+  c->set_body(s);
+  EXPECT_FALSE(c->prepare_body(s));
+}
 
 TEST(ImageSpaceCollider, GlFactoryNamesItself) {
   CLOTHBENCH_REQUIRE_GL();

@@ -27,6 +27,7 @@ class BodyBetweenFrames final : public Collider {
   std::string device() const override { return inner_.device(); }
   void set_body(const BodyFrame& body) override { inner_.set_body(body); }
   void update_body(const BodyFrame& body) override { inner_.update_body(body); }
+  bool prepare_body(const BodyFrame& body) override { return inner_.prepare_body(body); }
   void set_query_region(const Box3& region) override { inner_.set_query_region(region); }
   /// The next queries are answered `tau` >= 0 seconds before the pose of the last set_body/update_body.
   void set_time_before_pose(Real tau) { tau_ = tau; }

@@ -59,7 +59,9 @@ struct RunResult {
   double setup_ms = 0;          ///< collider set-up (maps rendered / BVH built)
   double search_share = 0;      ///< object space: share of the collider's query points that needed a
                                 ///< closest-point search (CollideStats::searches); 0 for the others
-  int threads = 1;
+  int threads = 1;              ///< the collider's worker threads; 2 at least when frames were prepared ahead
+  long prepared_frames =
+      0;  ///< measured frames whose body the collider prepared on a second thread (body.prepare_ahead)
   Accuracy accuracy;            ///< vertices and (with face queries) quad midpoints, end state
   double seam_gap_max_mm = 0;
   double strain_max = 0, strain_p99 = 0;

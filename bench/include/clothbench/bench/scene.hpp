@@ -22,6 +22,8 @@ struct BodySpec {
   double fps = 60;                    ///< body frames per second of animation (collider updates)
   bool move_between_frames = true;    ///< each cloth step sees the body at its own time (BodyBetweenFrames),
                                       ///< not the frame's end pose
+  bool prepare_ahead = false;         ///< the next frame's body (skinning, the collider's maps) is prepared on a
+                                      ///< second thread while the cloth steps through this one (Collider::prepare_body)
   double skin_mm = 0;                 ///< while animated, the body is answered this much thicker (BodyBetweenFrames) [mm]
   std::string shape = "mesh";         ///< "mesh" or "sphere"
   Real radius = 0.25f;                ///< sphere radius [m]

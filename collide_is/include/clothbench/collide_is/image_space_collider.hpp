@@ -74,6 +74,10 @@ class ImageSpaceCollider final : public Collider {
   std::string device() const override;
   void set_body(const BodyFrame& body) override;
   void update_body(const BodyFrame& body) override;
+  /// Draws the maps of `body` into a second map set, which the following update_body (of the same frame) makes
+  /// current: only with a renderer that may draw on any thread (is-cpu; GL contexts are bound to their thread:
+  /// false, nothing drawn).
+  bool prepare_body(const BodyFrame& body) override;
   /// The maps of the next renders draw only the rows `region` spans (MapSet::limit_rows); a point outside the
   /// region may be answered as if no body were there.
   void set_query_region(const Box3& region) override { region_ = region; }
@@ -83,7 +87,10 @@ class ImageSpaceCollider final : public Collider {
   const MapSet& maps() const { return maps_; }
 
  private:
-  void render(const BodyFrame& body);
+  // draws `body` into `maps` (cameras on its bounding box, the rows of region_); true unless a static body keeps
+  // the maps it has
+  void render(const BodyFrame& body, MapSet& maps) const;
+  void check_update(const BodyFrame& body) const;
   // one point's contact; true on a hit
   bool answer(const Vec3& p, Contact& c) const;
 
@@ -92,6 +99,9 @@ class ImageSpaceCollider final : public Collider {
   DepthTest test_;
   ViewRule rule_;
   MapSet maps_;
+  MapSet next_;                 // prepare_body's maps, made current by the next update_body
+  bool prepared_ = false;       // next_ holds the maps of the next update_body's frame
+  double prepared_ms_ = 0;      // the time prepare_body took (counted as update time once made current)
   std::optional<Box3> region_;  // set_query_region's
   int vertex_count_ = 0;
   CollideStats stats_;

@@ -102,6 +102,15 @@ class Collider {
   /// it can move in a frame). A collider may skip work for the body outside it (image space draws only the map
   /// rows it spans) and then answer a point outside it as if no body were there. Default: ignored.
   virtual void set_query_region(const Box3& region) { (void)region; }
+  /// Prepares the next update_body(body) ahead of it, on another thread than the queries' if the caller likes
+  /// (the body's motion is prescribed, so the next frame's maps can be drawn while the cloth steps through this
+  /// one): true when it did, and the update_body with that same frame that must follow then only makes it current.
+  /// Only query() and stats() may run meanwhile, and nothing else on this collider. Default: false, nothing
+  /// prepared (update_body does all of the work).
+  virtual bool prepare_body(const BodyFrame& body) {
+    (void)body;
+    return false;
+  }
   /// Hot path: one Contact per point. Never throws; NaN points are counted as degenerate.
   virtual void query(PointsView points, ContactsOut out) = 0;
   /// Cumulative timings and counts since construction.
