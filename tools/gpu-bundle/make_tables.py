@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Tables of a run-on-gpu.sh run, from its files (nothing typed in): puts them between the lines
+<!-- tables --> and <!-- /tables --> of DIR/README.md (where it has them) and prints them.
+
+  python3 tools/gpu-bundle/make_tables.py results/gpu-h100
+
+Reads DIR/raw/: map-render.json (collide_is_bench), walking-*.json and .txt (clothbench run; the worst frame
+of --every-frame is printed in the text only), gl-timer.jsonl with gl-timer-*.json (the runs with gl_timer.c
+preloaded), collide_is_tests.txt and maps-compare.json. Standard library only.
+"""
+import json
+import re
+import sys
+from pathlib import Path
+
+
+def bench_rows(path):
+    return json.loads(path.read_text())["benchmarks"]
+
+
+def median_ms(rows, name):
+    (row,) = [r for r in rows if r["name"] == name + "_median"]
+    return row["real_time"]
+
+
+def main():
+    d = Path(sys.argv[1])
+    raw = d / "raw"
+    out = []
+    timer = {j["label"]: j for j in map(json.loads, (raw / "gl-timer.jsonl").read_text().splitlines())}
+
+    rows = bench_rows(raw / "map-render.json")
+    egl_device = next(r["label"] for r in rows if r["name"].startswith("render/egl/") and "label" in r)
+    out += ["## Map rendering: one frame's maps (collide_is_bench `render/`)", "",
+            "The walking body at 2 s of walk_07_01 (26,756 triangles), 2 views x 1 layer, depth + normal + velocity "
+            "drawn, read back and the side layer added (`update_body`). is-egl, is-cpu: median of 3 repetitions "
+            "[ms/frame]. glReadPixels: the same benchmark run once more with gl_timer.c preloaded (its own frame time "
+            "in brackets); its time is the wait for the GPU's drawing plus the copy to the CPU.", "",
+            f"is-egl device: {egl_device}", "",
+            "| size | encoding | is-egl [ms] | is-cpu [ms] | is-cpu / is-egl | read back [MB/frame] "
+            "| glReadPixels [ms/frame] (timed run's frame) | glReadPixels share | read-back rate [GB/s] |",
+            "|---|---|---|---|---|---|---|---|---|"]
+    for enc in ("float", "8bit"):
+        for size in (320, 512, 1024):
+            egl = median_ms(rows, f"render/egl/{enc}/{size}")
+            cpu = median_ms(rows, f"render/cpu/{enc}/{size}")
+            t = timer[f"render/egl/{enc}/{size}"]
+            (timed,) = bench_rows(raw / f"gl-timer-render-egl-{enc}-{size}.json")
+            rp = t["glReadPixels"]["ms_per_frame"]
+            mb = t["read_bytes_per_frame"] / 1e6
+            out.append(f"| {size}^2 | {enc} | {egl:.2f} | {cpu:.2f} | {cpu / egl:.2f} | {mb:.1f} | {rp:.2f} "
+                       f"({timed['real_time']:.2f}) | {100 * rp / timed['real_time']:.0f} % | {mb / rp:.1f} |")
+
+    out += ["", "## Walking (`make bench-gpu`): `clothbench run scenes/walking/G.toml --every-frame`", "",
+            "60 frames (1 - 3 s of walk_07_01). Maps = the collider's `update_body` per frame (6 views x 5 layers, "
+            "as the scenes set). Worst frame: of the 60 measured frames (text output; the JSON has no worst-frame "
+            "fields). glReadPixels / glTexImage2D: the is-egl run once more with gl_timer.c preloaded (without "
+            "--every-frame; its own maps time in brackets).", "",
+            "| garment | collider | frames/s | skinning [ms/frame] | maps [ms/frame] | worst frame: inside "
+            "| depth max | crossings | strain max | glReadPixels [ms/frame] (timed run's maps) | glTexImage2D [ms/frame] "
+            "| read back [MB/frame] |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    worst_re = re.compile(r"worst frame: ([\d.]+) % inside, depth max ([\d.]+) mm, crossings ([\d.]+) %; "
+                          r"strain max ([\d.]+) %")
+    for g in ("skirt", "dress_sleeves"):
+        for c in ("is-egl", "is-cpu"):
+            (b,) = bench_rows(raw / f"walking-{g}-{c}.json")
+            w = worst_re.search((raw / f"walking-{g}-{c}.txt").read_text())
+            extra = "| | |"
+            if c == "is-egl":
+                t = timer[f"walking-{g}-is-egl"]
+                (tb,) = bench_rows(raw / f"gl-timer-walking-{g}-is-egl.json")
+                extra = (f"| {t['glReadPixels']['ms_per_frame']:.1f} ({tb['collider_update_ms_per_frame']:.1f}) "
+                         f"| {t['glTexImage2D']['ms_per_frame']:.1f} | {t['read_bytes_per_frame'] / 1e6:.1f} |")
+            out.append(f"| {g} ({b['vertices']} v) | {c} | {b['fps']:.2f} | {b['skinning_ms_per_frame']:.2f} "
+                       f"| {b['collider_update_ms_per_frame']:.2f} | {w[1]} % | {w[2]} mm | {w[3]} % | {w[4]} % {extra}")
+
+    out += ["", "## is-egl's maps against is-cpu's", "",
+            "Float maps (tests/collide_is/egl_test.cpp, EglMaps.SameAsCpuAsIsGlIs; the walking body at rest and a "
+            "sphere, 320^2): pixels covered in both, pixels covered by one renderer only, depth equal to the bit, "
+            "largest depth difference.", "",
+            "| body | views x layers | covered | coverage mismatches | depth bit-identical | max depth difference |",
+            "|---|---|---|---|---|---|"]
+    maps_re = re.compile(r"\[ maps \] (\S+) \(egl\) (\d+) views, (\d+) layers \d+\^2: covered (\d+), coverage "
+                         r"mismatches (\d+), depth bit-identical on ([\d.]+) %, max ([\d.]+) um")
+    for m in maps_re.finditer((raw / "collide_is_tests.txt").read_text()):
+        out.append(f"| {Path(m[1]).name} | {m[2]} x {m[3]} | {m[4]} | {m[5]} | {float(m[6]):.2f} % "
+                   f"| {float(m[7]) / 1000:.3f} mm |")
+    out += ["", "Pictures of `clothbench maps --renderer egl|cpu` (8-bit colour pictures, tools/gpu-bundle/"
+            "compare_maps.py): pixels covered by one renderer only, and covered pixels whose colour differs.", "",
+            "| pose | size | picture | covered | egl only | cpu only | colour differs | by > 1 step | max step |",
+            "|---|---|---|---|---|---|---|---|---|"]
+    for r in json.loads((raw / "maps-compare.json").read_text())["comparisons"]:
+        out.append(f"| {r['pose']} | {r['size']}^2 | {r['picture']} | {r['covered_egl']} | {r['covered_egl_only']} "
+                   f"| {r['covered_cpu_only']} | {r['both_covered_differ']} | {r['both_covered_differ_by_more_than_1']} "
+                   f"| {r['max_channel_difference']} |")
+    text = "<!-- generated by tools/gpu-bundle/make_tables.py from raw/; do not edit -->\n" + "\n".join(out) + "\n"
+    readme = d / "README.md"
+    if readme.exists():
+        r = readme.read_text()
+        a, b = r.find("<!-- tables -->\n"), r.find("<!-- /tables -->")
+        if 0 <= a < b:
+            readme.write_text(r[: a + len("<!-- tables -->\n")] + text + r[b:])
+    print(text, end="")
+
+
+if __name__ == "__main__":
+    main()
