@@ -43,8 +43,10 @@ TEST(EglMaps, DeviceNamesEglAndTheRenderer) {
   EXPECT_EQ(c->device(), r->device());
 }
 
+// on llvmpipe as is-gl does (bit for bit, nearly); on a GPU within its own rasterisation's differences
 TEST(EglMaps, SameAsCpuAsIsGlIs) {
   CLOTHBENCH_REQUIRE_EGL();
+  const bool software = cpu_device(make_egl_map_renderer()->device());
   const BodyModel& model = test::test_body_model();
   const BodyFrame sphere = make_sphere_body(Vec3(0.01f, 0.4f, 0.02f), 0.25f);
   for (int views : {2, 6})
@@ -53,8 +55,9 @@ TEST(EglMaps, SameAsCpuAsIsGlIs) {
       o.views = views;
       o.layers = layers;
       o.side_layer = false;
-      test::expect_maps_match_cpu(egl_maps(sphere, o), sphere, o, "sphere (egl)");
-      test::expect_maps_match_cpu(egl_maps(model.rest(), o), model.rest(), o, (model.path() + " (egl)").c_str());
+      test::expect_maps_match_cpu(egl_maps(sphere, o), sphere, o, "sphere (egl)", software);
+      test::expect_maps_match_cpu(egl_maps(model.rest(), o), model.rest(), o, (model.path() + " (egl)").c_str(),
+                                  software);
     }
 }
 

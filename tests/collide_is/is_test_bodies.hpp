@@ -66,12 +66,16 @@ inline const std::string& egl_unavailable() {
 
 /// Maps an OpenGL renderer drew (`gl`, of `body` with `o`) agree with the CPU rasteriser's as for the papers' two
 /// views (map_set_test.cpp, GlMaps): the same coverage in every map (views and peeled layers), depth
-/// bit-identical on 99.9 % of the covered pixels, within 10 um.
-inline void expect_maps_match_cpu(const MapSet& gl, const BodyFrame& body, const ColliderOptions& o, const char* what) {
+/// bit-identical on 99.9 % of the covered pixels, within 10 um. That is llvmpipe's arithmetic, which the CPU
+/// rasteriser copies; a GPU (`software` false) rasterises its own way: there coverage may differ on 1 in 10,000
+/// covered pixels (a peeled layer's gap test deciding otherwise) and depth by 1 mm on as many (measured on an
+/// NVIDIA H100: 5 of 112,943 and up to 0.77 mm, results/gpu-h100).
+inline void expect_maps_match_cpu(const MapSet& gl, const BodyFrame& body, const ColliderOptions& o, const char* what,
+                                  bool software = true) {
   const MapSet cpu = render_maps(body, "cpu", o);
   ASSERT_EQ(gl.z.size(), cpu.z.size());
   ASSERT_EQ(gl.z.size(), static_cast<std::size_t>(gl.frame.map_count()) * gl.view_pixels());
-  long covered = 0, coverage_mismatch = 0, identical = 0;
+  long covered = 0, coverage_mismatch = 0, identical = 0, beyond_mm = 0;
   double worst = 0;
   for (std::size_t i = 0; i < gl.z.size(); ++i) {
     const bool a = gl.mask[i] != MapSet::kEmpty, b = cpu.mask[i] != MapSet::kEmpty;
@@ -79,12 +83,19 @@ inline void expect_maps_match_cpu(const MapSet& gl, const BodyFrame& body, const
     if (!a || !b) continue;
     ++covered;
     identical += gl.z[i] == cpu.z[i];
-    worst = std::max(worst, std::abs(double(gl.z[i]) - double(cpu.z[i])));
+    const double difference = std::abs(double(gl.z[i]) - double(cpu.z[i]));
+    worst = std::max(worst, difference);
+    beyond_mm += difference > 1e-3;
   }
   std::cout << "[ maps ] " << what << " " << o.views << " views, " << o.layers << " layers " << o.map_size
             << "^2: covered " << covered << ", coverage mismatches " << coverage_mismatch << ", depth bit-identical on "
             << 100.0 * double(identical) / double(covered) << " %, max " << worst * 1e6 << " um\n";
   EXPECT_GT(covered, 1000 * o.views);
+  if (!software) {
+    EXPECT_LE(double(coverage_mismatch), 1e-4 * double(covered));
+    EXPECT_LE(double(beyond_mm), 1e-4 * double(covered));
+    return;
+  }
   EXPECT_EQ(coverage_mismatch, 0);
   EXPECT_LT(worst, 10e-6);
   EXPECT_GE(double(identical) / double(covered), 0.999);
