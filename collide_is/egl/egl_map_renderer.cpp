@@ -115,6 +115,7 @@ class EglGlContext final : public GlContext {
   bool make_current() override {
     return eglMakeCurrent(made_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, made_.context) == EGL_TRUE;
   }
+  void release() override { eglMakeCurrent(made_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
   void* proc(const char* name) override { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
   std::string renderer_name() const override { return "egl"; }
   std::string provider() const override { return provider_; }

@@ -62,19 +62,23 @@ class GlMapRenderer final : public MapRenderer {
     if (!context_->make_current()) throw std::runtime_error(who_ + ": the OpenGL context cannot be made current");
     gl_ = GlApi::load([this](const char* f) { return context_->proc(f); }, who_);
     set_up();
+    context_->release();
   }
 
   ~GlMapRenderer() override {
-    make_current();
+    context_->make_current();
     release_targets();
     gl_.DeleteTextures(1, &previous_);
     gl_.DeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
     gl_.DeleteVertexArrays(1, &vao_);
     gl_.DeleteProgram(program_);
+    context_->release();
   }
 
   std::string_view name() const override { return name_; }
   std::string device() const override { return device_; }
+  // the context is current only while a render runs
+  bool any_thread() const override { return true; }
 
   void render(const BodyFrame& body, MapSet& maps) override {
     make_current();
@@ -83,6 +87,7 @@ class GlMapRenderer final : public MapRenderer {
     draw(body, maps);
     for (int view = 0; view < views_; ++view) read_back(maps, view, view);
     for (int layer = 2; layer <= maps.frame.layers; ++layer) peel(body, maps, layer);
+    context_->release();
     depth_from_zbuffer(maps);
   }
 
@@ -116,7 +121,9 @@ class GlMapRenderer final : public MapRenderer {
     device_ = context_->provider() + ": " + text(GL_VENDOR) + " " + text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
   }
 
-  void make_current() { context_->make_current(); }
+  void make_current() {
+    if (!context_->make_current()) throw std::runtime_error(who_ + ": the OpenGL context cannot be made current");
+  }
 
   GLuint compile(GLenum type, const char* source) {
     const GLuint s = gl_.CreateShader(type);

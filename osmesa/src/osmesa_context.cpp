@@ -57,6 +57,8 @@ bool Context::make_current() {
                            kClientSide) != 0;
 }
 
+void Context::release() { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
+
 void* proc_address(const char* name) { return reinterpret_cast<void*>(OSMesaGetProcAddress(name)); }
 
 unsigned int link_program(const char* vertex_source, const char* fragment_source, const std::string& who) {

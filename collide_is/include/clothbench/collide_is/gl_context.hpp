@@ -17,6 +17,8 @@ class GlContext {
   virtual ~GlContext() = default;
   /// Makes this context current on the calling thread; false when the provider refuses.
   virtual bool make_current() = 0;
+  /// Makes no context current on the calling thread, so that another thread may make this one current next.
+  virtual void release() = 0;
   /// The address of OpenGL function `name` ("glDrawElements") from this context's provider, or null.
   virtual void* proc(const char* name) = 0;
   /// The renderer's name ("gl", "egl"); its errors are reported as "is-" + the name.
@@ -25,7 +27,8 @@ class GlContext {
   virtual std::string provider() const = 0;
 };
 
-/// The OpenGL map renderer on `context` (made current at construction and before every render): one FBO with
+/// The OpenGL map renderer on `context` (made current at construction and before every render, released after
+/// it, so that renders may come from any thread, one at a time): one FBO with
 /// two colour targets (normal, velocity; RGBA32F or RGBA8) and a depth target of size x (views x size), the
 /// views stacked upwards, peeled layers drawn again with a shader discarding what is not beyond the last,
 /// read back with glReadPixels. Its device() names the provider, GL_VENDOR and GL_RENDERER. Throws

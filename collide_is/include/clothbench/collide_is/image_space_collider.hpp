@@ -75,8 +75,7 @@ class ImageSpaceCollider final : public Collider {
   void set_body(const BodyFrame& body) override;
   void update_body(const BodyFrame& body) override;
   /// Draws the maps of `body` into a second map set, which the following update_body (of the same frame) makes
-  /// current: only with a renderer that may draw on any thread (is-cpu; GL contexts are bound to their thread:
-  /// false, nothing drawn).
+  /// current (every renderer: the OpenGL ones hold their context only while they draw).
   bool prepare_body(const BodyFrame& body) override;
   /// The maps of the next renders draw only the rows `region` spans (MapSet::limit_rows); a point outside the
   /// region may be answered as if no body were there.

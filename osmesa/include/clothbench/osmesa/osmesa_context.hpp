@@ -21,6 +21,8 @@ class Context {
 
   /// Makes this context current again (after another context was); returns false when OSMesa refuses.
   bool make_current();
+  /// No OSMesa context current on the calling thread.
+  static void release();
 
  private:
   std::string who_;
