@@ -65,7 +65,6 @@ class CpuMapRenderer final : public MapRenderer {
  public:
   std::string_view name() const override { return "cpu"; }
   std::string device() const override { return "our CPU rasteriser"; }
-  bool any_thread() const override { return true; }
 
   void render(const BodyFrame& body, MapSet& maps) override {
     // window coordinates and z-buffer depth of every view, as GL computes them

@@ -77,8 +77,6 @@ class GlMapRenderer final : public MapRenderer {
 
   std::string_view name() const override { return name_; }
   std::string device() const override { return device_; }
-  // the context is current only while a render runs
-  bool any_thread() const override { return true; }
 
   void render(const BodyFrame& body, MapSet& maps) override {
     make_current();

@@ -54,7 +54,7 @@ void ImageSpaceCollider::check_update(const BodyFrame& body) const {
 bool ImageSpaceCollider::prepare_body(const BodyFrame& body) {
   check_update(body);
   // a static body keeps the maps of set_body
-  if ((!body.moving && !maps_.has_velocity) || !renderer_->any_thread()) return false;
+  if (!body.moving && !maps_.has_velocity) return false;
   Stopwatch watch;
   render(body, next_);
   prepared_ = true;

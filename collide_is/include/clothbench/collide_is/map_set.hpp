@@ -190,9 +190,8 @@ class MapRenderer {
   /// Renders depth and normal maps (and velocity maps when maps.has_velocity) of `body`, every
   /// view and peeled layer, mask kBody or kEmpty. Does not add the side layer. Never throws once set up, but for
   /// an OpenGL context that another thread holds (std::runtime_error).
+  /// Any thread may call it, one at a time.
   virtual void render(const BodyFrame& body, MapSet& maps) = 0;
-  /// Whether render may run on any thread (one at a time); GL contexts are bound to the thread that made them.
-  virtual bool any_thread() const { return false; }
 };
 
 /// Whether a MapRenderer::device() names a renderer on the CPU (Mesa's llvmpipe, our rasteriser), not a GPU.
