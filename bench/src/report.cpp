@@ -193,6 +193,7 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
     row["skinning_ms_per_frame"] = r.skinning_ms / double(r.frames);
     row["collider_update_ms_per_frame"] = r.collider_update_ms / double(r.frames);
     row["animate_iterations"] = r.animate.iterations;
+    row["prepared_frames"] = r.prepared_frames;
   }
   if (r.divergence) {
     row["diverged_iteration"] = r.divergence->iteration;
@@ -216,6 +217,17 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
   row["strain_over"] = r.strain_over;
   row["strain_max_where"] = r.strain_max_where;
   row["kinetic_energy_j"] = r.kinetic_energy;
+  if (!r.frame_samples.empty()) {
+    // every animation frame measured (RunOptions::measure_frames): the worst and the mean frame
+    row["frames_measured"] = r.frame_samples.size();
+    row["worst_frame_inside_pct"] = r.frame_max(&FrameSample::inside_pct);
+    row["mean_frame_inside_pct"] = r.frame_mean(&FrameSample::inside_pct);
+    row["worst_frame_depth_max_mm"] = r.frame_max(&FrameSample::depth_max_mm);
+    row["worst_frame_crossings_pct"] = r.frame_max(&FrameSample::crossings_pct);
+    row["mean_frame_crossings_pct"] = r.frame_mean(&FrameSample::crossings_pct);
+    row["worst_frame_strain_max"] = r.frame_max(&FrameSample::strain_max);
+    row["depth_max_where"] = r.depth_max_where;
+  }
   return row;
 }
 

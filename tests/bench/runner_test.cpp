@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "clothbench/bench/body_between_frames.hpp"
+#include "clothbench/bench/report.hpp"
 #include "clothbench/bench/runner.hpp"
 #include "clothbench/config.h"
 #include "clothbench/sim/sphere_collider.hpp"
@@ -59,6 +60,13 @@ TEST(Runner, EveryFrameIsMeasuredAndTheDeepestPointIsNamed) {
   std::snprintf(depth, sizeof depth, "%.1f mm inside", deepest);
   EXPECT_EQ(r.depth_max_where.rfind("vertex ", 0), 0u) << r.depth_max_where;
   EXPECT_NE(r.depth_max_where.find(depth), std::string::npos) << r.depth_max_where;
+  // the JSON row (run --json, results/*.json) carries the worst and the mean frame, not only the end state
+  const nlohmann::json row = result_row(r, "sphere");
+  EXPECT_EQ(row.at("frames_measured").get<long>(), r.frames);
+  EXPECT_EQ(row.at("worst_frame_depth_max_mm").get<double>(), deepest);
+  EXPECT_EQ(row.at("worst_frame_inside_pct").get<double>(), r.frame_max(&FrameSample::inside_pct));
+  EXPECT_EQ(row.at("mean_frame_crossings_pct").get<double>(), r.frame_mean(&FrameSample::crossings_pct));
+  EXPECT_EQ(row.at("depth_max_where").get<std::string>(), r.depth_max_where);
 }
 
 // the sphere's velocity applies to the animation only: dressing sees a body at rest
