@@ -67,7 +67,6 @@ void Simulator::limit_velocities(bool contacts_stop_inward) {
   if (l != Limit::kVelocity && l != Limit::kVelocityZero && l != Limit::kDirectional &&
       l != Limit::kDirectionalLiteral)
     return;
-  const Real max_len_factor = 1 + params_.threshold;
   const Vec3 v_grav = phase_gravity() * dt_;  // walking Eq. 6: v_grav = g dt (zero while sewing: no gravity acts)
   // held points cannot catch up: attached ones and those the body holds (in contact)
   held_.assign(static_cast<std::size_t>(x_.cols()), 0);
@@ -80,9 +79,8 @@ void Simulator::limit_velocities(bool contacts_stop_inward) {
   for (pass_ = 1; pass_ <= params_.limit_passes; ++pass_) {
     const auto was_changed = [&](int v) { return changed_in_pass_[static_cast<std::size_t>(v)] >= pass_ - 1; };
     changes_ = 0;
-    for (int s : spring_order_)
-      if (pass_ == 1 || was_changed(mesh_.springs(0, s)) || was_changed(mesh_.springs(1, s)))
-        limit_spring(l, max_len_factor, v_grav, s);
+    for (const SweptSpring& e : sweep_)
+      if (pass_ == 1 || was_changed(e.a) || was_changed(e.b)) limit_spring(l, v_grav, e);
     move_merged_as_one(false);  // a sewn point is one point to the limit too
     if (contacts_stop_inward) stop_inward_contacts();
     if (changes_ == 0) break;
@@ -101,7 +99,7 @@ void Simulator::order_springs_from_held() {
   // their nearer end's hops from a held vertex (breadth first; springs out of reach of any keep their order last)
   // the order depends only on which vertices are held: kept while that set stays (the second call of a step,
   // a cloth resting on the body)
-  if (held_ == order_held_ && spring_order_.size() == static_cast<std::size_t>(mesh_.springs.cols())) return;
+  if (held_ == order_held_ && sweep_.size() == static_cast<std::size_t>(mesh_.springs.cols())) return;
   order_held_ = held_;
   const std::size_t nv = held_.size(), ns = static_cast<std::size_t>(mesh_.springs.cols());
   auto& level = order_level_;
@@ -128,9 +126,14 @@ void Simulator::order_springs_from_held() {
     ++count[static_cast<std::size_t>(spring_level[s]) + 1];
   }
   for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
-  spring_order_.resize(ns);
-  for (std::size_t s = 0; s < ns; ++s)
-    spring_order_[static_cast<std::size_t>(count[static_cast<std::size_t>(spring_level[s])]++)] = static_cast<int>(s);
+  // packed in sweep order: the passes read them one after the other
+  const Real max_len_factor = 1 + params_.threshold;
+  sweep_.resize(ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    const auto i = static_cast<Eigen::Index>(s);
+    sweep_[static_cast<std::size_t>(count[static_cast<std::size_t>(spring_level[s])]++)] = {
+        static_cast<int>(s), mesh_.springs(0, i), mesh_.springs(1, i), max_len_factor * mesh_.rest_length[i]};
+  }
 }
 
 void Simulator::stop_inward_contacts() {
@@ -143,12 +146,12 @@ void Simulator::stop_inward_contacts() {
   }
 }
 
-void Simulator::limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s) {
-  const int a = mesh_.springs(0, s), b = mesh_.springs(1, s);
+void Simulator::limit_spring(Limit l, const Vec3& v_grav, const SweptSpring& e) {
+  const int a = e.a, b = e.b;
   // the length this step would give (Eq. 3 position update): no spring may end it over-elongated
   const Vec3 d = x_.col(b) - x_.col(a);  // p12 = p2 - p1
   const Vec3 dv = v_.col(b) - v_.col(a);
-  const Real max_len = max_len_factor * mesh_.rest_length[s];
+  const Real max_len = e.max_len;
   // split along the spring's line as it would end the step (the papers' line p1p2 when it does not turn):
   // keeping the relative velocity along it that ends the step at the allowed length is then the nearest
   // allowed motion, however fast the spring turns, so passes over all springs converge

@@ -4,9 +4,10 @@
 
   python3 tools/gpu-bundle/make_tables.py results/gpu-h100
 
-Reads DIR/raw/: map-render.json (collide_is_bench), walking-*.json and .txt (clothbench run; the worst frame
-of --every-frame is printed in the text only), gl-timer.jsonl with gl-timer-*.json (the runs with gl_timer.c
-preloaded), collide_is_tests.txt and maps-compare.json. Standard library only.
+Reads DIR/raw/: map-render.json (collide_is_bench), walking-*.json and .txt (clothbench run, three variants;
+the worst frame of --every-frame from the JSON, or from the text where an older JSON lacks it), gl-timer.jsonl
+with gl-timer-*.json (the runs with gl_timer.c preloaded), collide_is_tests.txt and maps-compare.json.
+Standard library only.
 """
 import json
 import re
@@ -52,28 +53,53 @@ def main():
                        f"({timed['real_time']:.2f}) | {100 * rp / timed['real_time']:.0f} % | {mb / rp:.1f} |")
 
     out += ["", "## Walking (`make bench-gpu`): `clothbench run scenes/walking/G.toml --every-frame`", "",
-            "60 frames (1 - 3 s of walk_07_01). Maps = the collider's `update_body` per frame (6 views x 5 layers, "
-            "as the scenes set). Worst frame: of the 60 measured frames (text output; the JSON has no worst-frame "
-            "fields). glReadPixels / glTexImage2D: the is-egl run once more with gl_timer.c preloaded (without "
-            "--every-frame; its own maps time in brackets).", "",
-            "| garment | collider | frames/s | skinning [ms/frame] | maps [ms/frame] | worst frame: inside "
-            "| depth max | crossings | strain max | glReadPixels [ms/frame] (timed run's maps) | glTexImage2D [ms/frame] "
-            "| read back [MB/frame] |",
-            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+            "60 frames (1 - 3 s of walk_07_01). Variants: *stable* = the scene as it is (our stable regime); "
+            "*ahead* = `--set body.prepare_ahead=true` (the next frame skinned and its maps drawn on a second thread "
+            "while the cloth steps; skinning and maps ms/frame are then that thread's); *papers, ahead* = `--set "
+            "solver.regime=papers --set solver.limit=velocity --set solver.limit_passes=16 --set "
+            "body.prepare_ahead=true` (walking-t2's speed row). s/frame = wall time of the animate phase per frame "
+            "(1 / frames/s). Cloth ms/frame = (CD&R + CS) per iteration x steps/frame, the per-iteration means being "
+            "over the whole run (sew and drape included: the JSON has no animate-only cloth time), so an estimate. "
+            "Maps = the collider's `update_body` per frame (6 views x 5 layers, as the scenes set). Worst frame: of "
+            "the 60 measured frames (the JSON's worst_frame_* fields, or the text output where the JSON has none). glReadPixels / glTexImage2D: "
+            "the stable is-egl run once more with gl_timer.c preloaded (without --every-frame; its own maps time in "
+            "brackets).", "",
+            "| garment | variant | collider | steps/frame at dt | s/frame | frames/s | skinning [ms/frame] "
+            "| maps [ms/frame] | cloth [ms/frame] (est.) | worst frame: inside | depth max | crossings | strain max "
+            "| glReadPixels [ms/frame] (timed run's maps) | glTexImage2D [ms/frame] | read back [MB/frame] |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     worst_re = re.compile(r"worst frame: ([\d.]+) % inside, depth max ([\d.]+) mm, crossings ([\d.]+) %; "
                           r"strain max ([\d.]+) %")
+    variants = (("", "stable"), ("-ahead", "ahead"), ("-papers-ahead", "papers, ahead"))
     for g in ("skirt", "dress_sleeves"):
-        for c in ("is-egl", "is-cpu"):
-            (b,) = bench_rows(raw / f"walking-{g}-{c}.json")
-            w = worst_re.search((raw / f"walking-{g}-{c}.txt").read_text())
-            extra = "| | |"
-            if c == "is-egl":
-                t = timer[f"walking-{g}-is-egl"]
-                (tb,) = bench_rows(raw / f"gl-timer-walking-{g}-is-egl.json")
-                extra = (f"| {t['glReadPixels']['ms_per_frame']:.1f} ({tb['collider_update_ms_per_frame']:.1f}) "
-                         f"| {t['glTexImage2D']['ms_per_frame']:.1f} | {t['read_bytes_per_frame'] / 1e6:.1f} |")
-            out.append(f"| {g} ({b['vertices']} v) | {c} | {b['fps']:.2f} | {b['skinning_ms_per_frame']:.2f} "
-                       f"| {b['collider_update_ms_per_frame']:.2f} | {w[1]} % | {w[2]} mm | {w[3]} % | {w[4]} % {extra}")
+        for suffix, variant in variants:
+            for c in ("is-egl", "is-cpu"):
+                path = raw / f"walking-{g}-{c}{suffix}.json"
+                if not path.exists():
+                    continue
+                (b,) = bench_rows(path)
+                w = worst_re.search((raw / f"walking-{g}-{c}{suffix}.txt").read_text())
+                extra = "| | |"
+                if c == "is-egl" and not suffix and f"walking-{g}-is-egl" in timer:
+                    t = timer[f"walking-{g}-is-egl"]
+                    (tb,) = bench_rows(raw / f"gl-timer-walking-{g}-is-egl.json")
+                    extra = (f"| {t['glReadPixels']['ms_per_frame']:.1f} ({tb['collider_update_ms_per_frame']:.1f}) "
+                             f"| {t['glTexImage2D']['ms_per_frame']:.1f} | {t['read_bytes_per_frame'] / 1e6:.1f} |")
+                if b.get("diverged"):
+                    worst = f"diverged ({b.get('diverged_phase', '?')}: {b.get('diverged_reason', '?')}) | | |"
+                elif "worst_frame_inside_pct" in b:
+                    worst = (f"{b['worst_frame_inside_pct']:.2f} % | {b['worst_frame_depth_max_mm']:.2f} mm "
+                             f"| {b['worst_frame_crossings_pct']:.2f} % | {100 * b['worst_frame_strain_max']:.1f} %")
+                elif w:
+                    worst = f"{w[1]} % | {w[2]} mm | {w[3]} % | {w[4]} %"
+                else:
+                    worst = "? | | |"
+                fps = b.get("fps", 0.0)
+                cloth = (b["cdr_ms"] + b["cs_ms"]) * b["steps_per_frame"]
+                out.append(f"| {g} ({b['vertices']} v) | {variant} | {c} | {b['steps_per_frame']:.0f} at "
+                           f"{b['dt_ms']:.3f} ms | {1 / fps if fps else float('nan'):.4f} | {fps:.2f} "
+                           f"| {b['skinning_ms_per_frame']:.2f} | {b['collider_update_ms_per_frame']:.2f} "
+                           f"| {cloth:.1f} | {worst} {extra}")
 
     out += ["", "## is-egl's maps against is-cpu's", "",
             "Float maps (tests/collide_is/egl_test.cpp, EglMaps.SameAsCpuAsIsGlIs; the walking body at rest and a "

@@ -6,7 +6,8 @@
 #   tools/gpu-bundle/run-on-gpu.sh TARBALL OUTDIR
 # Writes OUTDIR/run.log (everything printed) and OUTDIR/gpu-results.tar.gz (every result file, repacked
 # after each step, so a run cut short still returns what it finished).
-# For a quick trial: WALKING="skirt:672" BENCH_FILTER='^render/(egl|cpu)/float/320$' REPETITIONS=1.
+# For a quick trial: WALKING="skirt:672" BENCH_FILTER='^render/(egl|cpu)/float/320$' REPETITIONS=1 (and
+# VARIANTS, default "stable ahead papers-ahead": the walking runs' variants, step 3).
 set -uo pipefail
 TARBALL=${1:?usage: run-on-gpu.sh TARBALL OUTDIR}
 OUTDIR=${2:?usage: run-on-gpu.sh TARBALL OUTDIR}
@@ -34,6 +35,7 @@ export CLOTHBENCH_DATA=$REPO/scenes/data
 src=$(sed -n 's/^source_dir: //p' "$B/BUILD-INFO")
 if [ -n "$src" ] && [ ! -e "$src/scenes" ]; then mkdir -p "$(dirname "$src")" && ln -sfn "$REPO" "$src"; fi
 WALKING=${WALKING-skirt:672 dress_sleeves:2300}
+VARIANTS=${VARIANTS-stable ahead papers-ahead}
 BENCH_FILTER=${BENCH_FILTER:-^render/(egl|cpu)/}
 REPETITIONS=${REPETITIONS:-3}
 CB=$B/bin/clothbench
@@ -91,12 +93,23 @@ step tests "$B/bin/collide_is_tests" --gtest_filter='EglMaps.*:ImageSpaceAccurac
 step map-render "$B/bin/collide_is_bench" --benchmark_filter="$BENCH_FILTER" --benchmark_repetitions=$REPETITIONS \
   --benchmark_out="$R/map-render.json" --benchmark_out_format=json 2>&1 | tee "$R/map-render.txt"
 
-# 3. the walking runs of `make bench-gpu`: skirt (672 v) and dress with sleeves (2300 v), is-egl and is-cpu
-for gv in $WALKING; do for c in is-egl is-cpu; do
-  g=${gv%:*}
-  step walking-$g-$c "$CB" run "$REPO/scenes/walking/$g.toml" --collider $c --set garment.vertices=${gv#*:} \
-    --every-frame --quiet --json "$R/walking-$g-$c.json" 2>&1 | tee "$R/walking-$g-$c.txt"
-done; done
+# 3. the walking runs of `make bench-gpu`: skirt (672 v) and dress with sleeves (2300 v), is-egl and is-cpu, each in
+# three variants (file suffix): the scene as it is (stable regime; none), the next frame skinned and its maps drawn
+# on a second thread while the cloth steps (-ahead), and walking-t2's speed row: the papers' clock with walking
+# Eq. 5's limit, 16 limit passes, prepared ahead (-papers-ahead)
+variant_sets() {
+  case $1 in
+    stable) ;;
+    ahead) echo --set body.prepare_ahead=true ;;
+    papers-ahead) echo --set solver.regime=papers --set solver.limit=velocity --set solver.limit_passes=16 \
+      --set body.prepare_ahead=true ;;
+  esac
+}
+for gv in $WALKING; do for v in $VARIANTS; do for c in is-egl is-cpu; do
+  g=${gv%:*}; n=walking-$g-$c; [ $v = stable ] || n=$n-$v
+  step $n "$CB" run "$REPO/scenes/walking/$g.toml" --collider $c --set garment.vertices=${gv#*:} $(variant_sets $v) \
+    --every-frame --quiet --json "$R/$n.json" 2>&1 | tee "$R/$n.txt"
+done; done; done
 
 # 5. where is-egl's time goes: the same EGL work once more with gl_timer.c preloaded (time inside glReadPixels =
 # waiting for the GPU's drawing + the read-back; per frame), appended to gl-timer.jsonl

@@ -207,12 +207,16 @@ class Simulator {
   void detect();
   ForceModel force_model() const;
   Vec3 phase_gravity() const;  ///< the gravity acting in the current phase
+  struct SweptSpring {
+    int s, a, b;   // the spring and its ends
+    Real max_len;  // (1 + threshold) l0
+  };
   void limit_velocities(bool contacts_stop_inward = false);
   void stop_inward_contacts();
   void order_springs_from_held();
   void move_merged_as_one(bool positions);
   void mark_changed(int i);
-  void limit_spring(Limit l, Real max_len_factor, const Vec3& v_grav, Eigen::Index s);
+  void limit_spring(Limit l, const Vec3& v_grav, const SweptSpring& e);
   Vec3 spring_object_velocity(int a, int b) const;
   void cap_seam_speeds();
   void attract_seams();
@@ -242,8 +246,8 @@ class Simulator {
   std::vector<std::uint8_t> merged_;  // per seam pair
   std::vector<std::uint8_t> held_;    // per vertex, directional limit: attached, in contact, or following one
   std::vector<int> adj_start_, adj_;  // vertex -> neighbours over springs and seam pairs (CSR)
-  std::vector<int> spring_order_;     // the velocity limit's sweep: springs nearest held vertices first
-  std::vector<std::uint8_t> order_held_;  // the held vertices spring_order_ was computed for
+  std::vector<SweptSpring> sweep_;    // the velocity limit's sweep: springs nearest held vertices first
+  std::vector<std::uint8_t> order_held_;                             // the held vertices sweep_ was computed for
   std::vector<int> order_level_, order_queue_, order_spring_level_;  // its work space (hops from held vertices)
   std::vector<int> attach_tri_;       // per attached vertex
   Points3 attach_bary_;               // (3 x na)
