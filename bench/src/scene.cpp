@@ -212,6 +212,9 @@ void read_solver(Section s, SolverParams& p) {
   s.flag("push_out", p.push_out);
   s.number("push_speed", p.push_speed, 1e-3, 100);
   s.number("limit_speed", p.limit_speed, 0, 100);
+  double tolerance_mm = -1;  // given in mm, kept in m
+  s.number("limit_tolerance_mm", tolerance_mm, 0, 10);
+  if (tolerance_mm >= 0) p.limit_tolerance = Real(tolerance_mm * 1e-3);
   s.flag("face_queries", p.face_queries);
   s.flag("reaction_force", p.reaction_force);
   s.vec3("gravity", p.gravity);
@@ -402,7 +405,8 @@ std::string solver_config(const SolverParams& p) {
   w("masses", to_string(p.masses))("limit_after_response", p.limit_after_response);
   w("push_out", p.push_out)("push_speed", double(p.push_speed));
   w("limit", to_string(p.limit))("threshold", double(p.threshold))("stiff_factor", double(p.stiff_factor));
-  w("limit_passes", p.limit_passes)("limit_speed", double(p.limit_speed))("face_queries", p.face_queries);
+  w("limit_passes", p.limit_passes)("limit_speed", double(p.limit_speed))(
+      "limit_tolerance_mm", 1e3 * double(p.limit_tolerance))("face_queries", p.face_queries);
   w("reaction_force", p.reaction_force)("gravity", p.gravity)("seam_method", to_string(p.seam_method));
   w("seam_stiffness", double(p.seam_stiffness))("seam_reach", double(p.seam_reach));
   w("seam_speed", double(p.seam_speed))("attraction_speed", double(p.attraction_speed));

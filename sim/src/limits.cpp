@@ -9,6 +9,7 @@
 // rules as stated (walking Eq. 6 and the two rules after it).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
 
@@ -83,13 +84,16 @@ void Simulator::limit_velocities(bool contacts_stop_inward) {
       if (pass_ == 1 || was_changed(e.a) || was_changed(e.b)) limit_spring(l, v_grav, e);
     move_merged_as_one(false);  // a sewn point is one point to the limit too
     if (contacts_stop_inward) stop_inward_contacts();
+    ++timings_.limit_passes;
     if (changes_ == 0) break;
   }
   pass_ = 0;
 }
 
-void Simulator::mark_changed(int i) {
-  if (pass_ == 0) return;
+void Simulator::mark_changed(int i, Real change) {
+  // a velocity change that moves the point less than limit_tolerance over the step wakes no spring: the passes
+  // converge to within it instead of chasing rounding-sized changes around the cloth
+  if (pass_ == 0 || !(change * dt_ > params_.limit_tolerance)) return;
   changed_in_pass_[static_cast<std::size_t>(i)] = pass_;
   ++changes_;
 }
@@ -142,7 +146,7 @@ void Simulator::stop_inward_contacts() {
     const Contact& c = contacts_[static_cast<std::size_t>(i)];
     if (!c.hit || inv_m_[i] == 0) continue;
     const Real vn = (v_.col(i) - c.body_velocity).dot(c.normal);
-    if (vn < 0) v_.col(i) -= vn * c.normal, mark_changed(static_cast<int>(i));
+    if (vn < 0) v_.col(i) -= vn * c.normal, mark_changed(static_cast<int>(i), -vn);
   }
 }
 
@@ -180,7 +184,8 @@ void Simulator::limit_spring(Limit l, const Vec3& v_grav, const SweptSpring& e) 
       na = rear == a ? va : vb - target;
       nb = na + target;
       const int front = rear == a ? b : a;
-      if (!held_[static_cast<std::size_t>(front)]) held_[static_cast<std::size_t>(front)] = 1, mark_changed(front);
+      if (!held_[static_cast<std::size_t>(front)])
+        held_[static_cast<std::size_t>(front)] = 1, mark_changed(front, std::numeric_limits<Real>::infinity());
     } else {
       std::tie(na, nb) = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b], target);
     }
@@ -190,8 +195,8 @@ void Simulator::limit_spring(Limit l, const Vec3& v_grav, const SweptSpring& e) 
   // an attached end keeps its velocity and the free end follows it
   if (inv_m_[a] == 0) na = va, nb = va + target;
   if (inv_m_[b] == 0) nb = vb, na = vb - target;
-  if (na != va) v_.col(a) += (na - va) * u, mark_changed(a);
-  if (nb != vb) v_.col(b) += (nb - vb) * u, mark_changed(b);
+  if (na != va) v_.col(a) += (na - va) * u, mark_changed(a, std::abs(na - va));
+  if (nb != vb) v_.col(b) += (nb - vb) * u, mark_changed(b, std::abs(nb - vb));
 }
 
 Vec3 Simulator::spring_object_velocity(int a, int b) const {

@@ -725,6 +725,37 @@ TEST(Simulator, StableRegimeIsTheDefaults) {
 // the papers' regime on the hanging square of VelocityLimitsHoldStrainWhereNoneStretches: dt 5 ms, soft automatic
 // springs that Eq. 4 and Gershgorin admit, the directional limit (four passes, from the pinned corners out) holding
 // the stretch
+// limit_tolerance: a pass's change that moves a point less than it over the step wakes no spring, so the passes stop
+// sooner; the hanging square at the papers' clock keeps its strain within threshold + 1 % either way
+TEST(Simulator, LimitToleranceEndsThePassesSooner) {
+  const int n = 21;
+  const Real size = 0.6f;
+  const auto run = [&](Real tolerance) {
+    ClothMesh c = make_grid_cloth(n, n, size / Real(n - 1), Vec3(-size / 2, 1, 0), Vec3::UnitX(), -Vec3::UnitY());
+    c.attached = {0, n - 1};
+    Material m;
+    SolverParams p;
+    apply_regime(Regime::kPapers, m, p);
+    p.limit_tolerance = tolerance;
+    Simulator sim(c, m, p);
+    pin(sim);
+    Real strain = 0;
+    for (int i = 0; i < 400 && sim.step(); ++i)
+      if (i >= 200 && i % 10 == 0) strain = std::max(strain, sim.strain().max);
+    EXPECT_FALSE(sim.divergence());
+    return std::pair{sim.timings().limit_passes, strain};
+  };
+  const auto [exact_passes, exact_strain] = run(0);
+  const auto [passes, strain] = run(Real(5e-5));
+  std::printf(
+      "[ passes  ] hanging square, papers' clock: %ld limit passes (strain %.4f) exact, %ld (strain %.4f) "
+      "with 0.05 mm\n",
+      exact_passes, double(exact_strain), passes, double(strain));
+  EXPECT_LT(double(passes), 0.9 * double(exact_passes));
+  EXPECT_LE(exact_strain, 0.11f);
+  EXPECT_LE(strain, 0.11f);
+}
+
 TEST(Simulator, PapersRegimeIsStableAtItsDtOnTheHangingSquare) {
   const int n = 21;
   const Real size = 0.6f;

@@ -80,6 +80,9 @@ struct SolverParams {
   /// papers regime)
   bool limit_after_response = false;
   Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
+  Real limit_tolerance = 0;              ///< a velocity limit pass's change that moves a point less than this over the
+                                         ///< step does not make the next pass visit its springs [m] (0: any change;
+                                         ///< the papers' regime: 0.05 mm)
   bool face_queries = false;             ///< also query quad midpoints (dressing section 6)
   bool push_out = true;                  ///< vertices found inside the body are moved to its surface (Durupinar Eq. 3)
   Real push_speed = 2.f;                 ///< push_out moves a vertex no faster than this [m/s]
@@ -116,6 +119,7 @@ struct SimTimings {
   double cdr_ms = 0;  ///< collision detection (collider query) and response
   double cs_ms = 0;   ///< cloth simulation: forces (the reaction force of Eq. 16 included), integration, limits, seaming
   double limit_ms = 0;  ///< of cs_ms: the velocity limits' passes (super-elasticity, walking Eqs. 5-6)
+  long limit_passes = 0;  ///< velocity limit passes run (each call stops early once a pass changes nothing)
   long iterations = 0;
 };
 
@@ -215,7 +219,7 @@ class Simulator {
   void stop_inward_contacts();
   void order_springs_from_held();
   void move_merged_as_one(bool positions);
-  void mark_changed(int i);
+  void mark_changed(int i, Real change);
   void limit_spring(Limit l, const Vec3& v_grav, const SweptSpring& e);
   Vec3 spring_object_velocity(int a, int b) const;
   void cap_seam_speeds();
