@@ -3,10 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
-#include <future>
+#include <exception>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <random>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "clothbench/bench/body_between_frames.hpp"
@@ -322,26 +327,74 @@ double estimate_seconds(const Simulator& sim, Collider& dresser, Collider& colli
 }
 
 // the next body frame, evaluated and handed to the collider's prepare_body on a second thread while the cloth steps
-// through the current one (body.prepare_ahead): the body's motion is prescribed, so nothing of it waits on the cloth
-struct FrameAhead {
+// through the current one (body.prepare_ahead): the body's motion is prescribed, so nothing of it waits on the cloth.
+// One thread for the whole animation (an OpenGL context moving to a new thread every frame costs, measured with
+// is-egl on an NVIDIA H100, more than the drawing)
+class FrameAhead {
+ public:
+  explicit FrameAhead(const BodySource& source) : source_(source), worker_([this] { work(); }) {}
+  FrameAhead(const FrameAhead&) = delete;
+  FrameAhead& operator=(const FrameAhead&) = delete;
+  ~FrameAhead() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      quit_ = true;
+    }
+    changed_.notify_all();
+    worker_.join();
+  }
+
+  // the frame at `at`, its maps drawn by `collider`, under way on the worker
+  void start(Collider& collider, double at) {
+    wait();
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      collider_ = &collider;
+      t = at;
+      busy_ = true;
+    }
+    changed_.notify_all();
+  }
+  // until the frame under way is ready; rethrows what the worker threw
+  void wait() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [this] { return !busy_; });
+    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+  }
+
   BodyFrame frame;
   double t = -1;           // animation time of `frame`; < 0: none under way
-  double skinning_ms = 0;  // its evaluation's time (on the second thread)
+  double skinning_ms = 0;  // its evaluation's time (on the worker)
   bool prepared = false;   // the collider prepared its update (else update_body does the work, in turn)
-  std::future<void> job;
 
-  void start(const BodySource& source, Collider& collider, double at) {
-    t = at;
-    job = std::async(std::launch::async, [this, &source, &collider] {
-      Stopwatch skin;
-      source.frame_into(frame, t);
-      skinning_ms = skin.ms();
-      prepared = collider.prepare_body(frame);
-    });
+ private:
+  void work() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      changed_.wait(lock, [this] { return busy_ || quit_; });
+      if (quit_) return;
+      lock.unlock();
+      try {
+        Stopwatch skin;
+        source_.frame_into(frame, t);
+        skinning_ms = skin.ms();
+        prepared = collider_->prepare_body(frame);
+      } catch (...) {
+        error_ = std::current_exception();
+      }
+      lock.lock();
+      busy_ = false;
+      changed_.notify_all();
+    }
   }
-  void wait() {
-    if (job.valid()) job.get();
-  }
+
+  const BodySource& source_;
+  Collider* collider_ = nullptr;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool busy_ = false, quit_ = false;
+  std::exception_ptr error_;
+  std::thread worker_;  // last: started once the members it reads exist
 };
 
 // the queries of a frame come from the cloth's box grown by what it can move in `frames` frames (image space then
@@ -378,7 +431,7 @@ bool advance_frame(const BodySource& source, double t, double frame_dt, long ste
   collider.update_body(frame);
   if (ahead && t_next > 0) {
     set_region(collider, sim, region_margin, 2);
-    ahead->start(source, collider, t_next);
+    ahead->start(collider, t_next);
   }
   const bool attached = !sim.mesh().attached.empty();
   if (attached && !between) sim.follow_attachments(frame);
@@ -438,9 +491,10 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   const Real skin = Real(scene.body.skin_mm * 1e-3);
   const Real margin = Real(scene.collider_options.query_margin_mm * 1e-3);
   BodyBetweenFrames dresser_between(dresser, tol, skin), collider_between(collider, tol, skin);
-  FrameAhead lead_ahead, ahead;
-  FrameAhead* const lead_pipe = scene.body.prepare_ahead ? &lead_ahead : nullptr;
-  FrameAhead* const pipe = scene.body.prepare_ahead ? &ahead : nullptr;
+  std::optional<FrameAhead> lead_ahead, ahead;
+  if (scene.body.prepare_ahead) lead_ahead.emplace(source), ahead.emplace(source);
+  FrameAhead* const lead_pipe = lead_ahead ? &*lead_ahead : nullptr;
+  FrameAhead* const pipe = ahead ? &*ahead : nullptr;
   const auto lead_in_time = [&](long f) { return source.dress_time() + double(f) * frame_dt; };
   const auto window_time = [&](long f) { return source.start() + double(f) * frame_dt; };
   for (long f = 1; f <= lead_in && alive; ++f) {
@@ -458,7 +512,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     const double t = window_time(f);
     alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, margin, frame, r.skinning_ms,
                           pipe, f < frames ? window_time(f + 1) : 0);
-    r.prepared_frames += pipe && f < frames && ahead.prepared;
+    r.prepared_frames += pipe && f < frames && pipe->prepared;
     ++r.frames;
     Stopwatch outside;  // the strain, the oracle and the caller's callback are not the animation's time
     const double outside_cpu = thread_cpu_ms();
