@@ -101,6 +101,22 @@ def main():
                            f"| {b['skinning_ms_per_frame']:.2f} | {b['collider_update_ms_per_frame']:.2f} "
                            f"| {cloth:.1f} | {worst} {extra}")
 
+    # a later, smaller run (walking only) of a newer commit: check-<commit>/
+    for check in sorted(d.glob("check-*")):
+        commit = re.search(r"git_commit: (\w+)", (check / "environment.txt").read_text())[1]
+        out += ["", f"## Check at {commit[:7]}: walking only (`{check.name}/`)", "",
+                "The same machine kind, another VM (compare within this table only): stable and ahead as above, "
+                "frames/s and the collider's maps ms/frame.", "",
+                "| garment | variant | collider | frames/s | skinning [ms/frame] | maps [ms/frame] |", "|---|---|---|---|---|---|"]
+        for g in ("skirt", "dress_sleeves"):
+            for suffix, variant in variants:
+                for c in ("is-egl", "is-cpu"):
+                    path = check / f"walking-{g}-{c}{suffix}.json"
+                    if path.exists():
+                        (b,) = bench_rows(path)
+                        out.append(f"| {g} ({b['vertices']} v) | {variant} | {c} | {b.get('fps', 0.0):.2f} "
+                                   f"| {b['skinning_ms_per_frame']:.2f} | {b['collider_update_ms_per_frame']:.2f} |")
+
     out += ["", "## is-egl's maps against is-cpu's", "",
             "Float maps (tests/collide_is/egl_test.cpp, EglMaps.SameAsCpuAsIsGlIs; the walking body at rest and a "
             "sphere, 320^2): pixels covered in both, pixels covered by one renderer only, depth equal to the bit, "
