@@ -39,7 +39,8 @@ perf-baseline: build
 
 # the GPU-relevant benchmarks in one command, for a machine with a GPU (README.md, "On a GPU"): map rendering per
 # renderer (OSMesa, EGL, CPU) at 320^2 / 512^2 / 1024^2, and both walking garments of walking-t2 (skirt 672 v,
-# dress with sleeves 2,300 v) with is-egl and is-cpu (every frame measured), as JSON in $(BUILD)/bench-gpu/; each row names its device. CLOTHBENCH_EGL_DEVICE=N
+# dress with sleeves 2,300 v) with is-egl and is-cpu (every frame measured), each also with the next frame prepared
+# on a second thread (body.prepare_ahead, -ahead.json), as JSON in $(BUILD)/bench-gpu/; each row names its device. CLOTHBENCH_EGL_DEVICE=N
 # picks EGL device N (default: the first that is not Mesa's software device)
 BENCH_GPU := $(BUILD)/bench-gpu
 bench-gpu: build
@@ -47,9 +48,10 @@ bench-gpu: build
 	$(BUILD)/bin/clothbench maps $(CURDIR)/scenes/data/body/mh_female_walk.glb --renderer egl --png $(BENCH_GPU)/maps
 	$(BUILD)/bin/collide_is_bench --benchmark_filter='^render/' --benchmark_repetitions=3 \
 	  --benchmark_out=$(BENCH_GPU)/map-render.json --benchmark_out_format=json
-	for gv in skirt:672 dress_sleeves:2300; do for c in is-egl is-cpu; do g=$${gv%:*}; \
+	for gv in skirt:672 dress_sleeves:2300; do for c in is-egl is-cpu; do for a in false true; do g=$${gv%:*}; \
 	  $(BUILD)/bin/clothbench run scenes/walking/$$g.toml --collider $$c --set garment.vertices=$${gv#*:} \
-	    --every-frame --quiet --json $(BENCH_GPU)/walking-$$g-$$c.json || exit 1; done; done
+	    --set body.prepare_ahead=$$a --every-frame --quiet \
+	    --json $(BENCH_GPU)/walking-$$g-$$c$$([ $$a = true ] && echo -ahead).json || exit 1; done; done; done
 	@echo "bench-gpu: JSON in $(BENCH_GPU)/ (map-render.json, walking-*.json)"
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run (not part of CI: about 3x slower)
