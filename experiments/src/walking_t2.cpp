@@ -300,7 +300,8 @@ void walking_t2(ExperimentContext& ctx) {
       "lead-in (0 - 1 s), then measured over **two seconds of walking** (1 - 3 s, about two gait cycles) in place, on "
       "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
       "animation time and the cloth takes `steps/frame` steps of dt per frame, in our stable regime and at the papers' "
-      "clock (`solver.regime = papers`: dt 5 ms, equal point masses, soft springs; see dressing-t1) with the walking "
+      "clock (`solver.regime = papers`: dt 5 ms, equal point masses, soft springs, 32 limit passes that stop once "
+      "they change no point by more than 0.05 mm; see dressing-t1) with the walking "
       "paper's averaging limit (Eq. 5, `solver.limit = velocity`): with its directional limit (Eq. 6, the paper's "
       "choice for moving bodies, and the regime's default) the dress with sleeves diverges at that clock within the "
       "first frames of the walk (the ablation row; traced per stage: the first cloth speeds above 4 m/s, on a body "
@@ -333,7 +334,8 @@ void walking_t2(ExperimentContext& ctx) {
       "all: the same motion, the maps' cost beside. The rows \"next frame prepared ahead (2 threads)\" "
       "(`body.prepare_ahead`) skin the next frame and draw its maps on a second thread while the cloth steps through "
       "this one (the body's motion is prescribed): the same motion bit for bit, s/frame is then wall time with two "
-      "threads, and skinning and maps ms/frame are the second thread's. And "
+      "threads, and skinning and maps ms/frame are the second thread's (is-cpu only: llvmpipe already draws is-gl's "
+      "maps on both cores of this machine, and drawn beside the cloth they took longer than the cloth saved). And "
       "\"travelling\" keeps the root's motion (the maps follow the body).\n\n" +
           t.str() + "\n" + speed + charts +
           (media.empty() ? std::string()
