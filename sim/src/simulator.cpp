@@ -47,10 +47,6 @@ void apply_regime(Regime regime, Material& material, SolverParams& params) {
   // (four left 1 % of the 1,800-vertex shirt's springs past threshold + 1 %, sixteen 0.2 %; results/integrators.md)
   params.limit = papers ? Limit::kDirectional : stable.limit;
   params.limit_passes = papers ? 32 : stable.limit_passes;
-  // at 5 ms a step, a pass's change that moves a point less than 0.05 mm wakes no spring in the next pass: the
-  // passes then stop where they only chase such changes (the walking dress's limit 1.7x faster, the shirt's strain
-  // 10.8 % instead of 10.1 %; with the stable regime's thousands of steps such changes add up: not there)
-  params.limit_tolerance = papers ? Real(5e-5) : stable.limit_tolerance;
   params.seam_stiffness = stable.seam_stiffness;
   params.limit_after_response = papers;
   // soft seams close slowly over their last millimetres: pairs within 5 mm are sewn (2 mm stable)

@@ -81,8 +81,7 @@ struct SolverParams {
   bool limit_after_response = false;
   Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
   Real limit_tolerance = 0;              ///< a velocity limit pass's change that moves a point less than this over the
-                                         ///< step does not make the next pass visit its springs [m] (0: any change;
-                                         ///< the papers' regime: 0.05 mm)
+                                         ///< step does not make the next pass visit its springs [m] (0: any change)
   bool face_queries = false;             ///< also query quad midpoints (dressing section 6)
   bool push_out = true;                  ///< vertices found inside the body are moved to its surface (Durupinar Eq. 3)
   Real push_speed = 2.f;                 ///< push_out moves a vertex no faster than this [m/s]
