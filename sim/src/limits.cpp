@@ -136,7 +136,7 @@ void Simulator::order_springs_from_held() {
   for (std::size_t s = 0; s < ns; ++s) {
     const auto i = static_cast<Eigen::Index>(s);
     sweep_[static_cast<std::size_t>(count[static_cast<std::size_t>(spring_level[s])]++)] = {
-        static_cast<int>(s), mesh_.springs(0, i), mesh_.springs(1, i), max_len_factor * mesh_.rest_length[i]};
+        mesh_.springs(0, i), mesh_.springs(1, i), max_len_factor * mesh_.rest_length[i]};
   }
 }
 

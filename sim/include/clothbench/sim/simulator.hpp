@@ -211,7 +211,7 @@ class Simulator {
   ForceModel force_model() const;
   Vec3 phase_gravity() const;  ///< the gravity acting in the current phase
   struct SweptSpring {
-    int s, a, b;   // the spring and its ends
+    int a, b;      // the spring's ends
     Real max_len;  // (1 + threshold) l0
   };
   void limit_velocities(bool contacts_stop_inward = false);
