@@ -27,19 +27,10 @@ std::string_view ImageSpaceCollider::name() const {
 
 std::string ImageSpaceCollider::device() const { return renderer_->device(); }
 
-void ImageSpaceCollider::render(const BodyFrame& body, MapSet& maps) const {
-  // cameras on this frame's bounding box, velocity maps only for moving bodies
-  maps.reset(make_map_frame(bounding_box(body.positions), options_), options_.float_maps, body.moving,
-             options_.max_speed);
-  if (region_) maps.limit_rows(*region_);
-  renderer_->render(body, maps);
-  if (const int rings = side_layer_rings(options_, maps.frame.pixel)) add_side_layer(maps, rings);
-}
-
 void ImageSpaceCollider::set_body(const BodyFrame& body) {
   validate_body(body, std::string(name()) + " set_body");
   Stopwatch watch;
-  render(body, maps_);
+  render_maps_into(body, *renderer_, options_, maps_, region_);
   vertex_count_ = body.vertex_count();
   prepared_ = false;
   stats_.setup_ms += watch.ms();
@@ -56,7 +47,7 @@ bool ImageSpaceCollider::prepare_body(const BodyFrame& body) {
   // a static body keeps the maps of set_body
   if (!body.moving && !maps_.has_velocity) return false;
   Stopwatch watch;
-  render(body, next_);
+  render_maps_into(body, *renderer_, options_, next_, region_);
   prepared_ = true;
   prepared_ms_ = watch.ms();
   return true;
@@ -74,7 +65,7 @@ void ImageSpaceCollider::update_body(const BodyFrame& body) {
   // a static body keeps the maps of set_body
   if (!body.moving && !maps_.has_velocity) return;
   Stopwatch watch;
-  render(body, maps_);
+  render_maps_into(body, *renderer_, options_, maps_, region_);
   stats_.update_ms += watch.ms();
 }
 

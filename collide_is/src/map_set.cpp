@@ -254,10 +254,16 @@ MapSet render_maps(const BodyFrame& body, std::string_view renderer, const Colli
 MapSet render_maps(const BodyFrame& body, MapRenderer& renderer, const ColliderOptions& options) {
   validate_body(body, "render_maps");
   MapSet maps;
+  render_maps_into(body, renderer, options, maps);
+  return maps;
+}
+
+void render_maps_into(const BodyFrame& body, MapRenderer& renderer, const ColliderOptions& options, MapSet& maps,
+                      const std::optional<Box3>& rows) {
   maps.reset(make_map_frame(bounding_box(body.positions), options), options.float_maps, body.moving, options.max_speed);
+  if (rows) maps.limit_rows(*rows);
   renderer.render(body, maps);
   if (const int rings = side_layer_rings(options, maps.frame.pixel)) add_side_layer(maps, rings);
-  return maps;
 }
 
 }  // namespace clothbench

@@ -86,9 +86,6 @@ class ImageSpaceCollider final : public Collider {
   const MapSet& maps() const { return maps_; }
 
  private:
-  // draws `body` into `maps` (cameras on its bounding box, the rows of region_); true unless a static body keeps
-  // the maps it has
-  void render(const BodyFrame& body, MapSet& maps) const;
   void check_update(const BodyFrame& body) const;
   // one point's contact; true on a hit
   bool answer(const Vec3& p, Contact& c) const;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -218,5 +219,9 @@ std::unique_ptr<MapRenderer> make_cpu_map_renderer();
 MapSet render_maps(const BodyFrame& body, std::string_view renderer, const ColliderOptions& options);
 /// The same with a renderer of the caller's (is-egl's, make_egl_map_renderer()).
 MapSet render_maps(const BodyFrame& body, MapRenderer& renderer, const ColliderOptions& options);
+/// Draws `body` into `maps` (reused): cameras on its bounding box, velocity maps for a moving body, only the rows
+/// `rows` spans when given (MapSet::limit_rows), then the side layer. The body is not validated here.
+void render_maps_into(const BodyFrame& body, MapRenderer& renderer, const ColliderOptions& options, MapSet& maps,
+                      const std::optional<Box3>& rows = std::nullopt);
 
 }  // namespace clothbench
