@@ -87,21 +87,17 @@ std::vector<WalkVariant> walk_variants() {
   // vdb voxelises the skinned body again every frame (seconds each): half a second of walking only
   v.push_back({"stable, 0.5 s", "walk_07_01", "stable", "/0.5s", {"body.end_s=1.5"}, {"vdb"}});
   v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some});
-  // the papers' clock with walking Eq. 5's averaging limit: with the directional one (Eq. 6) the dress diverges there
-  v.push_back({"papers' clock, Eq. 5 limit",
-               "walk_07_01",
-               "papers",
-               "/papers",
-               {"solver.limit=velocity", "solver.limit_tolerance_mm=0.05"},
-               all});
+  // the papers' clock with walking Eq. 5's averaging limit (with the directional one, Eq. 6, the dress diverges
+  // there), its passes stopping at 0.05 mm
+  const auto papers_clock = [](std::vector<std::string> more) {
+    more.insert(more.begin(), {"solver.limit=velocity", "solver.limit_tolerance_mm=0.05"});
+    return more;
+  };
+  v.push_back({"papers' clock, Eq. 5 limit", "walk_07_01", "papers", "/papers", papers_clock({}), all});
   const std::vector<std::string> is_cpu{"is-cpu"};
   v.push_back({"papers' clock, directional limit (Eq. 6)", "walk_07_01", "papers", "/papers-eq6", {}, is_cpu});
-  v.push_back({"papers' clock, Eq. 5 limit",
-               "walk_08_02",
-               "papers",
-               "/papers/walk_08_02",
-               {"body.animation=walk_08_02", "solver.limit=velocity", "solver.limit_tolerance_mm=0.05"},
-               is_cpu});
+  v.push_back({"papers' clock, Eq. 5 limit", "walk_08_02", "papers", "/papers/walk_08_02",
+               papers_clock({"body.animation=walk_08_02"}), is_cpu});
   std::vector<std::string> papers_is{"collider.views=2"};
   for (const auto& o : papers_image_space("is-cpu")) papers_is.push_back(o);
   v.push_back({"stable, the papers' image space (front/back, z test, 8-bit)", "walk_07_01", "stable", "/papers-is",
@@ -127,12 +123,8 @@ std::vector<WalkVariant> walk_variants() {
                {"body.prepare_ahead=true"},
                is_cpu});
   // the speed row: the papers' clock with the next frame prepared on a second thread
-  v.push_back({"papers' clock, Eq. 5 limit, next frame prepared ahead (2 threads)",
-               "walk_07_01",
-               "papers",
-               "/papers-ahead",
-               {"solver.limit=velocity", "solver.limit_tolerance_mm=0.05", "body.prepare_ahead=true"},
-               is_cpu});
+  v.push_back({"papers' clock, Eq. 5 limit, next frame prepared ahead (2 threads)", "walk_07_01", "papers",
+               "/papers-ahead", papers_clock({"body.prepare_ahead=true"}), is_cpu});
   v.push_back({"stable, no push-out", "walk_07_01", "stable", "/nopush", {"solver.push_out=false"}, is_cpu});
   v.push_back({"stable, without Eq. 16", "walk_07_01", "stable", "/noeq16", {"solver.reaction_force=false"}, is_cpu});
   v.push_back({"stable, body held per frame", "walk_07_01", "stable", "/held", {"body.move_between_frames=false"},
@@ -150,10 +142,19 @@ std::string worst_mean(const RunResult& r, double FrameSample::*field, int digit
 // a garment is dressed when its seams were sewn before the measured walk starts
 bool dressed(const RunResult& r) { return r.window_seam_gap_mm <= kAccuracyLimits.seam_gap_mm; }
 
+// a run's animation per frame: wall time [s] and its parts [ms] (skinning, maps/refit, cloth = CD&R + CS)
+struct FrameTimes {
+  double s, skinning_ms, maps_ms, cloth_ms;
+};
+FrameTimes frame_times(const RunResult& r) {
+  const double frames = double(std::max(1L, r.frames));
+  return {r.animate.wall_ms / 1e3 / frames, r.skinning_ms / frames, r.collider_update_ms / frames,
+          (r.animate.cdr_ms + r.animate.cs_ms) / frames};
+}
+
 // the row of one run: timings only for a dressed garment that did not diverge
 std::vector<std::string> walk_row(const std::string& product, const WalkVariant& v, const std::string& collider,
                                   const RunResult& r, const paper::WalkingT2Row& p) {
-  const double frames = double(std::max(1L, r.frames));
   std::vector<std::string> row{product, v.label, v.clip, collider, std::to_string(r.vertices), std::to_string(r.frames),
                                num(r.steps_per_frame, 0) + " at " + num(1e3 * r.dt_s, 3) + " ms"};
   // no measured frame: the run diverged while dressing or in the lead-in
@@ -165,17 +166,16 @@ std::vector<std::string> walk_row(const std::string& product, const WalkVariant&
                       : "no: not dressed, seam gap " + num(r.window_seam_gap_mm, 1) + " mm when the walk starts");
     return row;
   }
-  const double s_per_frame = r.animate.wall_ms / 1e3 / frames;
-  const double cloth_ms = (r.animate.cdr_ms + r.animate.cs_ms) / frames;
+  const FrameTimes f = frame_times(r);
   const bool ok = !r.divergence;
-  row.insert(row.end(),
-             {num(s_per_frame, 4), num(1 / s_per_frame, 1), num(r.skinning_ms / frames, 2),
-              num(r.collider_update_ms / frames, 2), num(cloth_ms, 2), num(p.s_per_frame, 3) + " / " + num(p.fps, 1),
-              ok ? worst_mean(r, &FrameSample::inside_pct, 2) : "diverged",
-              ok ? num(r.frame_max(&FrameSample::depth_max_mm), 1) : "-",
-              ok ? worst_mean(r, &FrameSample::crossings_pct, 2) : "-",
-              num(100 * r.animate_strain_max, 1) + " / " + num(100 * r.frame_max(&FrameSample::strain_p99), 1),
-              limits_cell(r)});
+  row.insert(
+      row.end(),
+      {num(f.s, 4), num(1 / f.s, 1), num(f.skinning_ms, 2), num(f.maps_ms, 2), num(f.cloth_ms, 2),
+       num(p.s_per_frame, 3) + " / " + num(p.fps, 1), ok ? worst_mean(r, &FrameSample::inside_pct, 2) : "diverged",
+       ok ? num(r.frame_max(&FrameSample::depth_max_mm), 1) : "-",
+       ok ? worst_mean(r, &FrameSample::crossings_pct, 2) : "-",
+       num(100 * r.animate_strain_max, 1) + " / " + num(100 * r.frame_max(&FrameSample::strain_p99), 1),
+       limits_cell(r)});
   return row;
 }
 
@@ -183,18 +183,17 @@ std::vector<std::string> walk_row(const std::string& product, const WalkVariant&
 // bounds it on this machine: the body's side of a frame (skinning and maps, on the second thread)
 std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p) {
   if (r.frames == 0 || r.divergence) return "";
-  const double frames = double(r.frames), s_per_frame = r.animate.wall_ms / 1e3 / frames;
-  const double body_ms = (r.skinning_ms + r.collider_update_ms) / frames;
-  const double cloth_ms = (r.animate.cdr_ms + r.animate.cs_ms) / frames;
+  const FrameTimes f = frame_times(r);
+  const double body_ms = f.skinning_ms + f.maps_ms;
   return "**Speed** (the dress with sleeves, " + std::to_string(r.vertices) +
          " vertices, is-cpu, skinning, maps and cloth, the papers' clock with walking Eq. 5's limit and the next "
          "frame prepared on a second thread): **" +
-         num(1 / s_per_frame, 1) + " frames/s** (" + num(p.fps, 1) + " in the paper), " +
+         num(1 / f.s, 1) + " frames/s** (" + num(p.fps, 1) + " in the paper), " +
          (limit_misses(r, false).empty() ? "inside, depth and crossings within their limits at every frame"
                                          : "missing the limits: " + limits_cell(r, false).substr(4)) +
-         ". The cloth takes " + num(cloth_ms, 1) + " ms per frame (" + num(r.steps_per_frame, 0) +
-         " steps), the body's side " + num(body_ms, 1) + " ms (skinning " + num(r.skinning_ms / frames, 1) +
-         ", maps of six views with five layers " + num(r.collider_update_ms / frames, 1) +
+         ". The cloth takes " + num(f.cloth_ms, 1) + " ms per frame (" + num(r.steps_per_frame, 0) +
+         " steps), the body's side " + num(body_ms, 1) + " ms (skinning " + num(f.skinning_ms, 1) +
+         ", maps of six views with five layers " + num(f.maps_ms, 1) +
          "); a frame takes about the larger of the two. So on this machine no is-cpu run with these maps passes " +
          num(1e3 / body_ms, 0) +
          " frames/s even with the cloth free: 100 frames/s needs the body's side under 10 ms "
