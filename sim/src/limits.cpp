@@ -38,8 +38,11 @@ Limit parse_limit(const std::string& name) {
                               "' (none, stiff, position, velocity, velocity-zero, directional, directional-literal)");
 }
 
-std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa, Real wb,
-                                             Real target) {
+namespace {
+
+// limit_stretch_velocity's rules, inlined into the velocity limit's per-spring step
+inline std::pair<Real, Real> stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa, Real wb,
+                                              Real target) {
   // walking Eq. 5 averages, keeping the relative velocity `target`; with unequal masses the mass-weighted
   // mean keeps momentum (the papers' points all have one mass, where both are the same)
   const Real mean = (wa * va + wb * vb) / (wa + wb);
@@ -61,6 +64,13 @@ std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real
     }
     default: return {va, vb};
   }
+}
+
+}  // namespace
+
+std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa, Real wb,
+                                             Real target) {
+  return stretch_velocity(limit, va, vb, cos_alpha, wa, wb, target);
 }
 
 void Simulator::limit_velocities(bool contacts_stop_inward) {
@@ -187,10 +197,10 @@ void Simulator::limit_spring(Limit l, const Vec3& v_grav, const SweptSpring& e) 
       if (!held_[static_cast<std::size_t>(front)])
         held_[static_cast<std::size_t>(front)] = 1, mark_changed(front, std::numeric_limits<Real>::infinity());
     } else {
-      std::tie(na, nb) = limit_stretch_velocity(l, va, vb, cos_a, m_[a], m_[b], target);
+      std::tie(na, nb) = stretch_velocity(l, va, vb, cos_a, m_[a], m_[b], target);
     }
   } else {
-    std::tie(na, nb) = limit_stretch_velocity(l, va, vb, 0, m_[a], m_[b], target);
+    std::tie(na, nb) = stretch_velocity(l, va, vb, 0, m_[a], m_[b], target);
   }
   // an attached end keeps its velocity and the free end follows it
   if (inv_m_[a] == 0) na = va, nb = va + target;
