@@ -75,14 +75,14 @@ class CpuMapRenderer final : public MapRenderer {
       std::fill(maps.z.begin() + static_cast<std::ptrdiff_t>(begin), maps.z.begin() + static_cast<std::ptrdiff_t>(end),
                 1.0f);
     }
-    // one pass over the triangles, every view
-    for (Eigen::Index t = 0; t < body.triangles.cols(); ++t) {
-      const int i0 = body.triangles(0, t), i1 = body.triangles(1, t), i2 = body.triangles(2, t);
-      attributes(body, maps.has_velocity, i0, a_[0]);
-      attributes(body, maps.has_velocity, i1, a_[1]);
-      attributes(body, maps.has_velocity, i2, a_[2]);
-      for (int view = 0; view < maps.frame.views; ++view) {
-        const auto& w = window_[view];
+    // view by view (each keeps to its own maps), the triangles in order
+    for (int view = 0; view < maps.frame.views; ++view) {
+      const auto& w = window_[view];
+      for (Eigen::Index t = 0; t < body.triangles.cols(); ++t) {
+        const int i0 = body.triangles(0, t), i1 = body.triangles(1, t), i2 = body.triangles(2, t);
+        attributes(body, maps.has_velocity, i0, a_[0]);
+        attributes(body, maps.has_velocity, i1, a_[1]);
+        attributes(body, maps.has_velocity, i2, a_[2]);
         draw(maps, view, {w[i0], w[i1], w[i2]}, a_);
       }
     }
