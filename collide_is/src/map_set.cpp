@@ -171,7 +171,10 @@ void grow_ring(MapSet& maps, int view, std::vector<std::uint8_t>& rings, int rin
   // front camera (even views): nearer is the larger coordinate; back camera (odd): the smaller
   const auto nearer = [view](float a, float b) { return view % 2 == 0 ? a > b : a < b; };
   const std::uint8_t source_mask = ring == 1 ? MapSet::kBody : MapSet::kSide;
-  for (int row = 0; row < n; ++row) {
+  // the body is drawn only in the view's rows (limit_rows), so ring `ring`'s sources lie within ring - 1 of them
+  const auto v = static_cast<std::size_t>(view);
+  const int first = std::max(0, maps.row_first[v] - (ring - 1)), last = std::min(n - 1, maps.row_last[v] + (ring - 1));
+  for (int row = first; row <= last; ++row) {
     for (int col = 0; col < n; ++col) {
       const std::size_t i = maps.index(view, col, row);
       if (maps.mask[i] != source_mask || (ring > 1 && rings[i] != ring - 1)) continue;
