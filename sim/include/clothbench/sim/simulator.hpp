@@ -257,6 +257,9 @@ class Simulator {
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
   std::vector<int> changed_in_pass_;  // per vertex: the last limit pass (1-based) that changed its velocity
+  std::vector<int> incident_start_, incident_;         // vertex -> positions in sweep_ of its springs (CSR)
+  std::vector<std::uint64_t> visit_now_, visit_next_;  // sweep positions to visit in this pass and the next (bits)
+  std::size_t sweep_at_ = 0;                           // the position in sweep_ under way (sweep_.size(): none)
   int pass_ = 0;                      // the limit pass under way (0: none)
   long changes_ = 0;                  // velocity changes in that pass
   Box3 start_box_;
