@@ -6,7 +6,7 @@ JOBS ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 PACKAGES := cmake g++ make pkg-config libeigen3-dev libfcl-dev libembree-dev libosmesa6-dev \
             libegl-dev libegl-mesa0 \
-            libassimp-dev assimp-testmodels libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
+            libassimp-dev assimp-testmodels libmeshoptimizer-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
             libtomlplusplus-dev nlohmann-json3-dev libpng-dev python3-matplotlib libboost-dev \
             libopenvdb-dev libboost-iostreams-dev valgrind libjs-three libjs-chart.js
 # what only `make reproduce` needs (CI's `make test` stays lean): ffmpeg for the walking video, chromium for

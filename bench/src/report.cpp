@@ -163,6 +163,8 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
                      {"vertices", r.vertices},
                      {"query_points", r.query_points},
                      {"body_triangles", r.body_triangles},
+                     {"collision_triangles", r.collision_triangles},
+                     {"proxy_deviation_mm", r.proxy_deviation_mm},
                      {"total_s", r.total_s()},
                      {"setup_ms", r.setup_ms},
                      {"cdr_ms", r.cdr_ms_per_iteration()},

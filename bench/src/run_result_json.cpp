@@ -36,6 +36,7 @@ void run_fields(J& j, R& r, F&& f) {
   f(j, "config_hash", r.config_hash), f(j, "strain_threshold", r.strain_threshold);
   f(j, "iteration_budget", r.iteration_budget), f(j, "estimate_s", r.estimate_s), f(j, "vertices", r.vertices);
   f(j, "query_points", r.query_points), f(j, "body_triangles", r.body_triangles), f(j, "dt_s", r.dt_s);
+  f(j, "collision_triangles", r.collision_triangles), f(j, "proxy_deviation_mm", r.proxy_deviation_mm);
   f(j, "dt_bound_s", r.dt_bound_s), f(j, "dt_spectral_s", r.dt_spectral_s), f(j, "k_structural", r.k_structural);
   f(j, "frames", r.frames), f(j, "steps_per_frame", r.steps_per_frame), f(j, "skinning_ms", r.skinning_ms);
   f(j, "collider_update_ms", r.collider_update_ms), f(j, "setup_ms", r.setup_ms), f(j, "search_share", r.search_share);

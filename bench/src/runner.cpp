@@ -63,11 +63,14 @@ class BodySource {
  public:
   BodySource(const Scene& scene) : spec_(scene.body) {
     if (spec_.shape == "sphere") {
+      if (spec_.collision_triangles > 0)
+        throw InputError(located(scene.path, 0, "body.collision_triangles needs a mesh body, not a sphere"));
       sphere_ = make_sphere_body(Vec3::Zero(), spec_.radius, 48, 96);
       t1_ = spec_.move_s;
       return;
     }
     model_.emplace(load_body(resolve_scene_path(scene, spec_.file)));
+    if (spec_.collision_triangles > 0) proxy_.emplace(model_->simplified(spec_.collision_triangles));
     if (spec_.animation.empty()) return;
     anim_ = model_->animation_index(spec_.animation);
     const double clip = model_->animations()[anim_].duration_s;
@@ -87,13 +90,24 @@ class BodySource {
   bool is_sphere() const { return !model_; }
   Vec3 sphere_center(double t) const { return spec_.center + spec_.velocity * Real(t); }
 
-  // the frame at time t (animation time, or seconds of sphere motion)
-  void frame_into(BodyFrame& out, double t) const {
-    if (model_) {
+  // the frame the colliders see at time t (animation time, or seconds of sphere motion): the collision proxy's when
+  // there is one (body.collision_triangles)
+  void frame_into(BodyFrame& out, double t) const { frame_into(proxy_ ? proxy_ : model_, out, t); }
+  // the exact body at `used`'s time, for the oracle and the pictures: `used` itself without a proxy, else `scratch`
+  const BodyFrame& exact(const BodyFrame& used, BodyFrame& scratch) const {
+    if (!proxy_) return used;
+    frame_into(model_, scratch, used.time_s);
+    return scratch;
+  }
+  bool has_proxy() const { return proxy_.has_value(); }
+
+ private:
+  void frame_into(const std::optional<BodyModel>& model, BodyFrame& out, double t) const {
+    if (model) {
       if (anim_ < 0) {
-        out = model_->rest();
+        out = model->rest();
       } else {
-        model_->frame_into(out, anim_, t, spec_.walk_in_place);
+        model->frame_into(out, anim_, t, spec_.walk_in_place);
       }
       return;
     }
@@ -108,11 +122,20 @@ class BodySource {
 
  private:
   BodySpec spec_;
-  std::optional<BodyModel> model_;
+  std::optional<BodyModel> model_, proxy_;
   BodyFrame sphere_;
   int anim_ = -1;
   double dress_ = 0, t0_ = 0, t1_ = 0;
 };
+
+// the largest distance of an exact body vertex from the collision proxy's surface [mm]
+double proxy_deviation_mm(const BodyFrame& proxy, const BodyFrame& exact) {
+  std::vector<Real> d;
+  Oracle(proxy).signed_distance(exact.positions, d);
+  Real m = 0;
+  for (const Real x : d) m = std::max(m, std::abs(x));
+  return 1e3 * double(m);
+}
 
 ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   if (scene.garments.empty()) throw InputError(located(scene.path, 0, "the scene has no [[garment]]"));
@@ -508,6 +531,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   PhaseClock clock{sim};
   const double update_before = collider.stats().update_ms;
   double not_animation_ms = 0, not_animation_cpu_ms = 0;
+  BodyFrame exact_scratch;  // the exact body of a frame, with a collision proxy
   for (long f = 1; f <= frames && alive; ++f) {
     const double t = window_time(f);
     alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, margin, frame, r.skinning_ms,
@@ -518,8 +542,9 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     const double outside_cpu = thread_cpu_ms();
     const StrainStats strain = sim.strain();
     r.animate_strain_max = std::max(r.animate_strain_max, double(strain.max));
-    if (options.measure_frames && alive) measure_frame(frame, sim, strain, t, r);
-    if (options.on_frame) options.on_frame(f, t, frame, sim);
+    const BodyFrame& exact = source.exact(frame, exact_scratch);
+    if (options.measure_frames && alive) measure_frame(exact, sim, strain, t, r);
+    if (options.on_frame) options.on_frame(f, t, exact, sim);
     not_animation_ms += outside.ms();
     not_animation_cpu_ms += thread_cpu_ms() - outside_cpu;
     progress.report("animate: frame %ld of %ld (t = %.2f s)", f, frames, t);
@@ -600,8 +625,14 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   // lead-in starts moving at once) is not the body's there (it stays `moving`: the colliders keep what a
   // moving body needs, velocity maps or a refittable hierarchy, for the animation)
   frame.velocities.setZero();
-  r.body_triangles = frame.triangles.cols();
-  ClothMesh cloth = build_cloth(scene, frame);
+  BodyFrame exact_scratch;
+  const BodyFrame& exact = source.exact(frame, exact_scratch);
+  r.body_triangles = exact.triangles.cols();
+  if (source.has_proxy()) {
+    r.collision_triangles = frame.triangles.cols();
+    r.proxy_deviation_mm = proxy_deviation_mm(frame, exact);
+  }
+  ClothMesh cloth = build_cloth(scene, exact);
   std::unique_ptr<Collider> collider = make_scene_collider(scene, scene.collider, source);
   collider->set_body(frame);
   r.setup_ms = collider->stats().setup_ms;
@@ -654,7 +685,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   r.search_share = points > 0 ? double(searches) / double(points) : 0;
   r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&
                 (r.drape.reached || scene.stop.drape_max_s == 0) && (!source.moves() || r.animate.reached);
-  r.final_body = frame;
+  r.final_body = source.exact(frame, exact_scratch);
   if (!r.divergence) measure(scene, *sim, r);
   r.mesh = sim->mesh();
   r.mesh.positions = sim->positions();

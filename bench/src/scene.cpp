@@ -153,6 +153,7 @@ void read_body(Section s, BodySpec& b) {
   s.flag("move_between_frames", b.move_between_frames);
   s.flag("prepare_ahead", b.prepare_ahead);
   s.number("skin_mm", b.skin_mm, 0, 1000);
+  s.number("collision_triangles", b.collision_triangles, 0, 1e8);
   s.choice("shape", [&](const std::string& v) {
     if (v != "mesh" && v != "sphere") throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + v + "\"");
     b.shape = v;
@@ -380,6 +381,7 @@ std::string body_config(const BodySpec& b) {
   w("file", b.file)("animation", b.animation)("dress_at_s", b.dress_at_s)("start_s", b.start_s)("end_s", b.end_s);
   w("walk_in_place", b.walk_in_place)("fps", b.fps)("move_between_frames", b.move_between_frames)("skin_mm", b.skin_mm)(
       "prepare_ahead", b.prepare_ahead);
+  if (b.collision_triangles > 0) w("collision_triangles", b.collision_triangles);  // absent: the hashes before it
   w("shape", b.shape)("radius", double(b.radius));
   w("center", b.center)("velocity", b.velocity)("move_s", b.move_s);
   return w.str();

@@ -61,6 +61,11 @@ void print_spread(const std::vector<RunResult>& runs) {
 void print_summary(const RunArgs& a, const RunResult& r) {
   std::printf("%s / %s: %d vertices (%d query points), body %ld triangles\n", r.scene.c_str(), r.collider.c_str(),
               r.vertices, r.query_points, r.body_triangles);
+  if (r.collision_triangles > 0)
+    std::printf(
+        "  the colliders see a copy of %ld triangles (body.collision_triangles), every exact vertex within %.2f mm "
+        "of it; the oracle measures against the exact body\n",
+        r.collision_triangles, r.proxy_deviation_mm);
   if (!r.device.empty()) std::printf("  device: %s\n", r.device.c_str());
   print_config(a, r);
   std::printf("  %s\n", kDefinitions);

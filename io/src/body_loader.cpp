@@ -190,34 +190,12 @@ void drop_open_parts(BodyModelImpl& m) {
       m.dropped_vertices += size[root];
     }
   if (m.dropped_parts == 0) return;
-  // renumber vertices, triangles and skin influences
-  std::vector<int> remap(nv, -1);
-  int kept = 0;
-  for (Eigen::Index v = 0; v < nv; ++v)
-    if (keep[v]) remap[v] = kept++;
-  Points3 pos(3, kept);
-  std::vector<int> start{0}, bone;
-  std::vector<float> weight;
-  for (Eigen::Index v = 0; v < nv; ++v) {
-    if (!keep[v]) continue;
-    pos.col(remap[v]) = m.rest.positions.col(v);
-    for (int k = m.influence_start[v]; k < m.influence_start[v + 1]; ++k) {
-      bone.push_back(m.influence_bone[k]);
-      weight.push_back(m.influence_weight[k]);
-    }
-    start.push_back(static_cast<int>(bone.size()));
-  }
   std::vector<Eigen::Index> kept_tris;
   for (Eigen::Index t = 0; t < tris.cols(); ++t)
     if (keep[tris(0, t)]) kept_tris.push_back(t);
   Tris out(3, static_cast<Eigen::Index>(kept_tris.size()));
-  for (std::size_t i = 0; i < kept_tris.size(); ++i)
-    for (int k = 0; k < 3; ++k) out(k, i) = remap[tris(k, kept_tris[i])];
-  m.rest.positions = std::move(pos);
-  m.rest.triangles = std::move(out);
-  m.influence_start = std::move(start);
-  m.influence_bone = std::move(bone);
-  m.influence_weight = std::move(weight);
+  for (std::size_t i = 0; i < kept_tris.size(); ++i) out.col(static_cast<Eigen::Index>(i)) = tris.col(kept_tris[i]);
+  m.keep_vertices(keep, out);
 }
 
 // Normalisation to the DESIGN frame. assimp already applies the units and up axis a file declares

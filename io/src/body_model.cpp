@@ -1,5 +1,7 @@
 // BodyModel: skeleton animation (linear keys, slerp rotations) through the node hierarchy, then
 // linear blend skinning of the rest mesh, velocities and optional walk in place.
+#include <meshoptimizer.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -158,6 +160,34 @@ void BodyModelImpl::frame_into(BodyFrame& out, int a, double t, bool in_place) c
   out.moving = true;
 }
 
+void BodyModelImpl::keep_vertices(const std::vector<char>& keep, const Tris& triangles) {
+  const Eigen::Index nv = rest.positions.cols();
+  std::vector<int> remap(static_cast<std::size_t>(nv), -1);
+  int kept = 0;
+  for (Eigen::Index v = 0; v < nv; ++v)
+    if (keep[v]) remap[v] = kept++;
+  Points3 pos(3, kept);
+  std::vector<int> start{0}, bone;
+  std::vector<float> weight;
+  for (Eigen::Index v = 0; v < nv; ++v) {
+    if (!keep[v]) continue;
+    pos.col(remap[v]) = rest.positions.col(v);
+    for (int k = influence_start[v]; k < influence_start[v + 1]; ++k) {
+      bone.push_back(influence_bone[k]);
+      weight.push_back(influence_weight[k]);
+    }
+    start.push_back(static_cast<int>(bone.size()));
+  }
+  Tris out(3, triangles.cols());
+  for (Eigen::Index t = 0; t < triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k) out(k, t) = remap[triangles(k, t)];
+  rest.positions = std::move(pos);
+  rest.triangles = std::move(out);
+  influence_start = std::move(start);
+  influence_bone = std::move(bone);
+  influence_weight = std::move(weight);
+}
+
 // ---- BodyModel -------------------------------------------------------------------------------
 
 BodyModel::BodyModel(std::unique_ptr<BodyModelImpl> impl) : impl_(std::move(impl)) {}
@@ -171,6 +201,30 @@ int BodyModel::dropped_vertices() const { return impl_->dropped_vertices; }
 int BodyModel::bone_count() const { return impl_->bone_count; }
 const std::vector<AnimationInfo>& BodyModel::animations() const { return impl_->infos; }
 const std::string& BodyModel::path() const { return impl_->path; }
+
+BodyModel BodyModel::simplified(int target_triangles) const {
+  const BodyFrame& r = impl_->rest;
+  if (target_triangles <= 0 || target_triangles >= r.triangles.cols())
+    throw InputError(located(impl_->path, 0,
+                             "a simplified body needs 0 < triangles < the body's " +
+                                 std::to_string(r.triangles.cols()) + ", got " + std::to_string(target_triangles)));
+  // edge collapses by quadric error (meshoptimizer), any error allowed: the triangle count decides
+  const auto nv = static_cast<std::size_t>(r.positions.cols());
+  std::vector<unsigned> indices(r.triangles.data(), r.triangles.data() + r.triangles.size());
+  std::vector<unsigned> kept(indices.size());
+  const std::size_t n = meshopt_simplify(kept.data(), indices.data(), indices.size(), r.positions.data(), nv,
+                                         3 * sizeof(Real), 3 * static_cast<std::size_t>(target_triangles), 1.0f);
+  Tris triangles(3, static_cast<Eigen::Index>(n / 3));
+  std::vector<char> keep(nv, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    triangles.data()[i] = static_cast<int>(kept[i]);
+    keep[kept[i]] = 1;
+  }
+  auto impl = std::make_unique<BodyModelImpl>(*impl_);
+  impl->keep_vertices(keep, triangles);
+  finish_static_body(impl->rest);
+  return BodyModel(std::move(impl));
+}
 
 int BodyModel::animation_index(const std::string& name) const {
   std::string names;

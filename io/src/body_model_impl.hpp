@@ -62,6 +62,9 @@ class BodyModelImpl {
   /// Global transforms of every node at time t [s] of animation a (a < 0: rest), into `out`.
   void node_globals(int a, double t, std::vector<Mat4d>& out) const;
   void frame_into(BodyFrame& out, int a, double t, bool in_place) const;
+  /// Keeps the vertices with keep[v] (in order, with their skin) and makes `triangles` (old vertex numbers, every
+  /// one kept) the rest mesh's.
+  void keep_vertices(const std::vector<char>& keep, const Tris& triangles);
 };
 
 

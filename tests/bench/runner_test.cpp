@@ -5,6 +5,7 @@
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/runner.hpp"
 #include "clothbench/config.h"
+#include "clothbench/io/errors.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
 
 namespace clothbench {
@@ -164,6 +165,29 @@ TEST(Runner, FramesPreparedAheadGiveTheSameRun) {
   EXPECT_EQ(1, serial.threads);
   expect_same_cloth(ahead, serial);
   EXPECT_EQ(ahead.final_body.positions, serial.final_body.positions);
+}
+
+// body.collision_triangles: the colliders see a simplified copy of the body, the oracle and the pictures the exact
+// one; the run says how far the copy is from it
+TEST(Runner, ACollisionProxyIsWhatTheCollidersSeeNotWhatTheOracleMeasures) {
+  const RunResult exact = short_skirt_walk({});
+  const RunResult proxy = short_skirt_walk({"body.collision_triangles=6000"});
+  ASSERT_FALSE(proxy.divergence);
+  EXPECT_EQ(0, exact.collision_triangles);
+  EXPECT_EQ(0, exact.proxy_deviation_mm);
+  EXPECT_GT(proxy.collision_triangles, 5000);
+  EXPECT_LE(proxy.collision_triangles, 6000);
+  EXPECT_GT(proxy.proxy_deviation_mm, 0.1);  // the exact body's vertices are off the coarse surface ...
+  EXPECT_LT(proxy.proxy_deviation_mm, 10);   // ... by millimetres
+  EXPECT_EQ(proxy.body_triangles, exact.body_triangles);
+  EXPECT_EQ(proxy.final_body.triangles.cols(), exact.body_triangles);  // the oracle's body
+  EXPECT_EQ(proxy.final_body.positions, exact.final_body.positions);
+  std::printf("[ proxy ] skirt, is-cpu maps per frame: %.2f ms of the exact body, %.2f ms of %ld triangles (%.2f mm)\n",
+              exact.collider_update_ms / double(exact.frames), proxy.collider_update_ms / double(proxy.frames),
+              proxy.collision_triangles, proxy.proxy_deviation_mm);
+  Scene sphere = small_tablecloth();
+  sphere.body.collision_triangles = 100;
+  EXPECT_THROW(run_scene(sphere, {}), InputError);
 }
 
 // rk45 moves points by more than h v_end (its drift): the limits, seam caps and the response must see that

@@ -132,10 +132,11 @@ TEST(Scene, ConfigHashFollowsTheEffectiveConfiguration) {
             hash);
   EXPECT_EQ(config_hash(parse_scene(text, "s.toml", {"garment.vertices=400"})), hash);
   // any field of any section changes it
-  for (const char* set : {"body.fps=30", "garment.vertices=401", "material.density=0.2", "solver.threshold=0.06",
-                          "solver.face_queries=true", "collider.name=brute", "collider.map_size=512",
-                          "collider.views=4", "collider.layers=3", "collider.side_layer_mm=3",
-                          "collider.tangent_plane=false", "stop.drape_max_s=0.5", "stop.max_iterations=10"})
+  for (const char* set :
+       {"body.fps=30", "garment.vertices=401", "material.density=0.2", "solver.threshold=0.06",
+        "solver.face_queries=true", "collider.name=brute", "collider.map_size=512", "collider.views=4",
+        "collider.layers=3", "collider.side_layer_mm=3", "collider.tangent_plane=false", "stop.drape_max_s=0.5",
+        "stop.max_iterations=10", "body.collision_triangles=8000"})
     EXPECT_NE(config_hash(parse_scene(text, "s.toml", {set})), hash) << set;
   Scene with_collider = base;
   with_collider.collider = "embree";  // `run --collider` after loading

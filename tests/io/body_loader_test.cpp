@@ -122,6 +122,26 @@ void expect_input_error(const std::string& path, const std::string& what, BodyLo
   }
 }
 
+// body.collision_triangles: the simplified copy keeps some of the body's own vertices, skinned as the body skins them
+TEST(BodyLoader, SimplifiedBodyKeepsItsVerticesAndSkin) {
+  REQUIRE_WALKING_BODY(path);
+  const BodyModel body = load_body(path);
+  const BodyModel proxy = body.simplified(8000);
+  const Eigen::Index tris = proxy.rest().triangles.cols();
+  EXPECT_LE(tris, 8000);
+  EXPECT_GT(tris, 7000);
+  EXPECT_TRUE(check_edges(proxy.rest().triangles).closed());
+  EXPECT_LT(proxy.rest().positions.cols(), body.rest().positions.cols() / 2);
+  // each kept vertex is one of the body's, in every frame (its skin came with it)
+  const int walk = body.animation_index("walk_07_01");
+  for (const double t : {0.0, 1.7}) {
+    const BodyFrame full = body.frame(walk, t, true), coarse = proxy.frame(walk, t, true);
+    EXPECT_LT(max_nearest_distance(coarse.positions, full.positions), 1e-6) << "t = " << t;
+    EXPECT_EQ(coarse.triangles.cols(), tris);
+  }
+  for (const int bad : {0, -5, 26756, 40000}) EXPECT_THROW(body.simplified(bad), InputError) << bad;
+}
+
 TEST(BodyLoader, BadFilesGiveClearErrors) {
   expect_input_error(kBad + "does_not_exist.obj", "not found");
   expect_input_error(kBad + "body_text_renamed.obj", "");

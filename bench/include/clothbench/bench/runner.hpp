@@ -48,7 +48,10 @@ struct RunResult {
   long iteration_budget = 0;    ///< most iterations the stop rule allows (phases end early at their goal)
   double estimate_s = 0;        ///< simulation time estimated up front [s] (results never depend on it)
   int vertices = 0, query_points = 0;
-  long body_triangles = 0;
+  long body_triangles = 0;        ///< the exact body's (the oracle's)
+  long collision_triangles = 0;   ///< body.collision_triangles: the colliders' simplified copy's; 0 without one
+  double proxy_deviation_mm = 0;  ///< with a simplified copy: the largest distance of an exact body vertex from it
+                                  ///< (at the dressing pose) [mm]
   double dt_s = 0, dt_bound_s = 0, dt_spectral_s = 0;
   double k_structural = 0;      ///< the structural springs' stiffness as run (the automatic one when 0 was given) [N/m]
   PhaseResult sew, drape, animate;

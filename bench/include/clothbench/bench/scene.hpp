@@ -24,6 +24,8 @@ struct BodySpec {
                                       ///< not the frame's end pose
   bool prepare_ahead = false;         ///< the next frame's body (skinning, the collider's maps) is prepared on a
                                       ///< second thread while the cloth steps through this one (Collider::prepare_body)
+  int collision_triangles = 0;        ///< > 0: the colliders see a copy simplified to about this many triangles
+                                      ///< (BodyModel::simplified); the oracle measures against the exact body
   double skin_mm = 0;                 ///< while animated, the body is answered this much thicker (BodyBetweenFrames) [mm]
   std::string shape = "mesh";         ///< "mesh" or "sphere"
   Real radius = 0.25f;                ///< sphere radius [m]

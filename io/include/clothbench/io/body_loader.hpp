@@ -58,6 +58,10 @@ class BodyModel {
   BodyFrame frame(int animation, double t, bool walk_in_place = false) const;
   /// As frame(), reusing the storage of `out` (no allocation once `out` has the right size).
   void frame_into(BodyFrame& out, int animation, double t, bool walk_in_place = false) const;
+  /// A coarser copy for collision (scene key body.collision_triangles): about `target_triangles` triangles by edge
+  /// collapses (meshoptimizer's quadric simplifier), keeping a subset of this body's vertices with their skin, so
+  /// the copy's vertices lie on this body in every frame. Throws InputError unless 0 < target < triangles().
+  BodyModel simplified(int target_triangles) const;
   /// The file this model was loaded from.
   const std::string& path() const;
 
