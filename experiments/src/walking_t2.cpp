@@ -224,7 +224,17 @@ struct SpeedRun {
   std::string variant, clip;
   double fps;
   std::string misses;
+  FrameTimes times;
+  double strain_pct;  // the largest strain at any frame [%]
 };
+
+// the fastest of the runs on walk_07_01 within inside, depth and crossings at every frame (nullptr: none)
+const SpeedRun* fastest_within(const std::vector<SpeedRun>& runs) {
+  const SpeedRun* best = nullptr;
+  for (const SpeedRun& s : runs)
+    if (s.clip == "walk_07_01" && s.misses.empty() && (!best || s.fps > best->fps)) best = &s;
+  return best;
+}
 
 // "\"label\" (12.3 frames/s, missing ...)"
 std::string speed_run_text(const SpeedRun& s) {
@@ -235,15 +245,14 @@ std::string speed_run_text(const SpeedRun& s) {
 // the fastest of those runs on walk_07_01 within inside, depth and crossings, those that pass 100 frames/s with what
 // they miss, and the same settings on walk_08_02
 std::string speed_frontier(const std::vector<SpeedRun>& runs) {
-  const SpeedRun* best = nullptr;
+  const SpeedRun* best = fastest_within(runs);
   std::string fast, other_clip;
   for (const SpeedRun& s : runs) {
     if (s.clip != "walk_07_01") {
       other_clip += std::string(other_clip.empty() ? "" : "; ") + speed_run_text(s);
-      continue;
+    } else if (s.fps >= 100) {
+      fast += std::string(fast.empty() ? "" : "; ") + speed_run_text(s);
     }
-    if (s.misses.empty() && (!best || s.fps > best->fps)) best = &s;
-    if (s.fps >= 100) fast += std::string(fast.empty() ? "" : "; ") + speed_run_text(s);
   }
   return " What the accuracy buys, from the dress's rows prepared ahead at the papers' clock on walk_07_01 (looser "
          "limit passes, fewer surfaces and pixels, the colliders' body simplified, one limit pass with the papers' "
@@ -263,13 +272,24 @@ std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const
   const FrameTimes f = frame_times(r);
   const double body_ms = f.skinning_ms + f.maps_ms;
   const std::string misses = accuracy_misses(r);
+  const SpeedRun* best = fastest_within(frontier);
+  const std::string headline = best ? "**" + num(best->fps, 1) +
+                                          " frames/s** at the fastest settings that stay within inside, depth and "
+                                          "crossings at every frame (\"" +
+                                          best->variant + "\": the cloth " + num(best->times.cloth_ms, 1) +
+                                          " ms a frame, the body's side " +
+                                          num(best->times.skinning_ms + best->times.maps_ms, 1) + " ms; strain " +
+                                          num(best->strain_pct, 0) + " %, over its limit as in every walking row), and "
+                                    : std::string();
   return "**Speed** (the dress with sleeves, " + std::to_string(r.vertices) +
-         " vertices, is-cpu, skinning, maps and cloth, the papers' clock with walking Eq. 5's limit and the next "
-         "frame prepared on a second thread): **" +
-         num(1 / f.s, 1) + " frames/s** (" + num(p.fps, 1) + " in the paper), " +
+         " vertices, is-cpu, walk_07_01, skinning, maps and cloth, the papers' clock with walking Eq. 5's limit and "
+         "the next frame prepared on a second thread; " +
+         num(p.fps, 1) + " frames/s in the paper): " + headline + "**" + num(1 / f.s, 1) +
+         " frames/s** with the tight settings (\"papers' clock, Eq. 5 limit, next frame prepared ahead\": passes to "
+         "0.05 mm, six views of five surfaces, the exact body), " +
          (misses.empty() ? "inside, depth and crossings within their limits at every frame"
                          : "missing the limits: " + misses) +
-         ". The cloth takes " + num(f.cloth_ms, 1) + " ms per frame (" + num(r.steps_per_frame, 0) +
+         ". There the cloth takes " + num(f.cloth_ms, 1) + " ms per frame (" + num(r.steps_per_frame, 0) +
          " steps), the body's side " + num(body_ms, 1) + " ms (skinning " + num(f.skinning_ms, 1) +
          ", maps of six views with five layers " + num(f.maps_ms, 1) +
          "); a frame takes about the larger of the two. So on this machine no is-cpu run with these maps of the exact "
@@ -357,7 +377,8 @@ void walking_t2(ExperimentContext& ctx) {
         if (i == 1 && c == "is-cpu" && variant.row_suffix.rfind("/papers-ahead", 0) == 0) {
           const bool failed = r.frames == 0 || r.divergence || !dressed(r);
           frontier.push_back({variant.label, variant.clip, failed ? 0.0 : 1 / frame_times(r).s,
-                              failed ? std::string("diverged or not dressed") : accuracy_misses(r)});
+                              failed ? std::string("diverged or not dressed") : accuracy_misses(r), frame_times(r),
+                              100 * r.animate_strain_max});
           if (variant.row_suffix == "/papers-ahead") speed_run = r;
         }
         ctx.add_run(r, std::string("walking-t2/") + g.name + "/" + c + variant.row_suffix);
