@@ -85,29 +85,50 @@ void Simulator::limit_velocities(bool contacts_stop_inward) {
     held_[i] = inv_m_[i] == 0 || (!contacts_.empty() && contacts_[static_cast<std::size_t>(i)].hit);
   order_springs_from_held();
   // a pass visits only the springs with an end whose velocity changed in the last pass or in this one (the
-  // others would find what they found before), and the passes stop once one changes nothing. The springs to
-  // visit are bits by sweep position, set when an end changes (mark_changed): the first pass visits all
+  // others would find what they found before), and the passes stop once one changes nothing. After a pass that
+  // changed few points, the springs to visit are bits by sweep position, set from the points changed (mark_changed
+  // sets those after the spring under way as they change); after one that changed many, a scan of all springs
   changed_in_pass_.assign(static_cast<std::size_t>(x_.cols()), 0);
   const std::size_t words = (sweep_.size() + 63) / 64;
-  visit_now_.assign(words, ~std::uint64_t(0));
-  if (sweep_.size() % 64) visit_now_.back() = (std::uint64_t(1) << (sweep_.size() % 64)) - 1;
+  bool scan = true;  // the first pass visits every spring
   for (pass_ = 1; pass_ <= params_.limit_passes; ++pass_) {
     changes_ = 0;
-    visit_next_.assign(words, 0);
-    for (std::size_t w = 0; w < words; ++w)
-      while (const std::uint64_t bits = visit_now_[w]) {
-        visit_now_[w] = bits & (bits - 1);  // mark_changed sets only bits after this one
-        sweep_at_ = 64 * w + static_cast<std::size_t>(__builtin_ctzll(bits));
-        limit_spring(l, v_grav, sweep_[sweep_at_]);
-      }
-    sweep_at_ = sweep_.size();
+    marked_ = 0;
+    visiting_bits_ = !scan;
+    if (scan) {
+      const auto was_changed = [&](int v) { return changed_in_pass_[static_cast<std::size_t>(v)] >= pass_ - 1; };
+      for (const SweptSpring& e : sweep_)
+        if (pass_ == 1 || was_changed(e.a) || was_changed(e.b)) limit_spring(l, v_grav, e);
+    } else {
+      for (std::size_t w = 0; w < words; ++w)
+        while (const std::uint64_t bits = visit_bits_[w]) {
+          visit_bits_[w] = bits & (bits - 1);  // mark_changed sets only bits after this one
+          sweep_at_ = 64 * w + static_cast<std::size_t>(__builtin_ctzll(bits));
+          limit_spring(l, v_grav, sweep_[sweep_at_]);
+        }
+    }
+    visiting_bits_ = false;
     move_merged_as_one(false);  // a sewn point is one point to the limit too
     if (contacts_stop_inward) stop_inward_contacts();
     ++timings_.limit_passes;
     if (changes_ == 0) break;
-    std::swap(visit_now_, visit_next_);
+    // the next pass: a scan when a quarter of the points changed (cheaper than setting their springs' bits)
+    scan = 8 * marked_ > x_.cols();
+    if (scan) continue;
+    visit_bits_.assign(words, 0);
+    for (Eigen::Index i = 0; i < x_.cols(); ++i)
+      if (changed_in_pass_[static_cast<std::size_t>(i)] == pass_) set_visit_bits(static_cast<int>(i), 0);
   }
   pass_ = 0;
+}
+
+void Simulator::set_visit_bits(int i, std::size_t after) {
+  for (int k = adj_start_[static_cast<std::size_t>(i)]; k < adj_start_[static_cast<std::size_t>(i) + 1]; ++k) {
+    const auto e = static_cast<std::size_t>(adj_edge_[static_cast<std::size_t>(k)]);
+    if (e >= sweep_position_.size()) continue;  // a seam pair
+    const auto s = static_cast<std::size_t>(sweep_position_[e]);
+    if (s >= after) visit_bits_[s / 64] |= std::uint64_t(1) << (s % 64);
+  }
 }
 
 void Simulator::mark_changed(int i, Real change) {
@@ -115,18 +136,13 @@ void Simulator::mark_changed(int i, Real change) {
   // converge to within it instead of chasing rounding-sized changes around the cloth
   if (pass_ == 0 || !(change * dt_ > params_.limit_tolerance)) return;
   ++changes_;
-  // its springs: those after the one under way in this pass, all of them in the next (once per pass is enough:
-  // the bits a first change set after it are still set)
+  // its springs after the one under way are visited in this pass (bits only: a scan finds them), all of them in
+  // the next (once per pass is enough: the bits a first change set after it are still set)
   int& last = changed_in_pass_[static_cast<std::size_t>(i)];
   if (last == pass_) return;
   last = pass_;
-  for (int k = incident_start_[static_cast<std::size_t>(i)]; k < incident_start_[static_cast<std::size_t>(i) + 1];
-       ++k) {
-    const auto s = static_cast<std::size_t>(incident_[static_cast<std::size_t>(k)]);
-    const std::uint64_t bit = std::uint64_t(1) << (s % 64);
-    if (s > sweep_at_) visit_now_[s / 64] |= bit;
-    visit_next_[s / 64] |= bit;
-  }
+  ++marked_;
+  if (visiting_bits_) set_visit_bits(i, sweep_at_ + 1);
 }
 
 void Simulator::order_springs_from_held() {
@@ -164,22 +180,13 @@ void Simulator::order_springs_from_held() {
   // packed in sweep order: the passes read them one after the other
   const Real max_len_factor = 1 + params_.threshold;
   sweep_.resize(ns);
+  sweep_position_.resize(ns);
   for (std::size_t s = 0; s < ns; ++s) {
     const auto i = static_cast<Eigen::Index>(s);
-    sweep_[static_cast<std::size_t>(count[static_cast<std::size_t>(spring_level[s])]++)] = {
-        mesh_.springs(0, i), mesh_.springs(1, i), max_len_factor * mesh_.rest_length[i]};
-  }
-  // each vertex's springs by sweep position, in order
-  incident_start_.assign(nv + 1, 0);
-  for (const SweptSpring& e : sweep_)
-    ++incident_start_[static_cast<std::size_t>(e.a) + 1], ++incident_start_[static_cast<std::size_t>(e.b) + 1];
-  for (std::size_t i = 1; i <= nv; ++i) incident_start_[i] += incident_start_[i - 1];
-  incident_.resize(2 * ns);
-  std::vector<int>& fill = order_queue_;  // done with the queue
-  fill.assign(incident_start_.begin(), incident_start_.end() - 1);
-  for (std::size_t s = 0; s < ns; ++s) {
-    incident_[static_cast<std::size_t>(fill[static_cast<std::size_t>(sweep_[s].a)]++)] = static_cast<int>(s);
-    incident_[static_cast<std::size_t>(fill[static_cast<std::size_t>(sweep_[s].b)]++)] = static_cast<int>(s);
+    const int at = count[static_cast<std::size_t>(spring_level[s])]++;
+    sweep_position_[s] = at;
+    sweep_[static_cast<std::size_t>(at)] = {mesh_.springs(0, i), mesh_.springs(1, i),
+                                            max_len_factor * mesh_.rest_length[i]};
   }
 }
 

@@ -173,10 +173,14 @@ void Simulator::build_adjacency() {
   for (const auto& [a, b] : edges) ++adj_start_[static_cast<std::size_t>(a + 1)], ++adj_start_[static_cast<std::size_t>(b + 1)];
   for (std::size_t i = 1; i < adj_start_.size(); ++i) adj_start_[i] += adj_start_[i - 1];
   adj_.resize(static_cast<std::size_t>(adj_start_.back()));
+  adj_edge_.resize(adj_.size());
   std::vector<int> fill(adj_start_.begin(), adj_start_.end() - 1);
-  for (const auto& [a, b] : edges) {
-    adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
-    adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const auto [a, b] = edges[e];
+    const auto at_a = static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++);
+    const auto at_b = static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++);
+    adj_[at_a] = b, adj_[at_b] = a;
+    adj_edge_[at_a] = adj_edge_[at_b] = static_cast<int>(e);
   }
 }
 

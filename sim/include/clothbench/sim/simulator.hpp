@@ -219,6 +219,7 @@ class Simulator {
   void order_springs_from_held();
   void move_merged_as_one(bool positions);
   void mark_changed(int i, Real change);
+  void set_visit_bits(int i, std::size_t after);
   void limit_spring(Limit l, const Vec3& v_grav, const SweptSpring& e);
   Vec3 spring_object_velocity(int a, int b) const;
   void cap_seam_speeds();
@@ -249,6 +250,7 @@ class Simulator {
   std::vector<std::uint8_t> merged_;  // per seam pair
   std::vector<std::uint8_t> held_;    // per vertex, directional limit: attached, in contact, or following one
   std::vector<int> adj_start_, adj_;  // vertex -> neighbours over springs and seam pairs (CSR)
+  std::vector<int> adj_edge_;         // beside adj_: its spring (index < springs) or seam pair (springs + index)
   std::vector<SweptSpring> sweep_;    // the velocity limit's sweep: springs nearest held vertices first
   std::vector<std::uint8_t> order_held_;                             // the held vertices sweep_ was computed for
   std::vector<int> order_level_, order_queue_, order_spring_level_;  // its work space (hops from held vertices)
@@ -257,9 +259,11 @@ class Simulator {
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
   std::vector<int> changed_in_pass_;  // per vertex: the last limit pass (1-based) that changed its velocity
-  std::vector<int> incident_start_, incident_;         // vertex -> positions in sweep_ of its springs (CSR)
-  std::vector<std::uint64_t> visit_now_, visit_next_;  // sweep positions to visit in this pass and the next (bits)
-  std::size_t sweep_at_ = 0;                           // the position in sweep_ under way (sweep_.size(): none)
+  std::vector<int> sweep_position_;   // per spring: its position in sweep_
+  std::vector<std::uint64_t> visit_bits_;  // sweep positions the pass visits (after a pass that changed few points)
+  Eigen::Index marked_ = 0;                // the points the pass under way changed (each once)
+  bool visiting_bits_ = false;             // the pass visits visit_bits_ (else it scans every spring)
+  std::size_t sweep_at_ = 0;               // the position in sweep_ under way (while visiting_bits_)
   int pass_ = 0;                      // the limit pass under way (0: none)
   long changes_ = 0;                  // velocity changes in that pass
   Box3 start_box_;
