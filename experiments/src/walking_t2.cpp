@@ -142,11 +142,11 @@ std::vector<WalkVariant> walk_variants() {
   // everything that buys speed at once, the skin 1 mm thicker for the simplified body's error (2.8 mm at 6,000
   // triangles); on both clips
   const std::vector<std::string> fast =
-      papers_clock({"body.prepare_ahead=true", "collider.layers=1", "collider.map_size=256",
+      papers_clock({"body.prepare_ahead=true", "collider.layers=1", "collider.map_size=224",
                     "body.collision_triangles=6000", "body.skin_mm=5", "collider.tol=0.007"},
                    "2");
   const std::string fast_label =
-      "papers' clock, Eq. 5 limit, passes stopping at 2 mm, one surface per camera, 256² maps, the colliders' body "
+      "papers' clock, Eq. 5 limit, passes stopping at 2 mm, one surface per camera, 224² maps, the colliders' body "
       "simplified to 6,000 triangles, 5 mm skin (7 mm hit distance), prepared ahead (2 threads)";
   v.push_back({fast_label, "walk_07_01", "papers", "/papers-ahead-fast", fast, is_cpu});
   std::vector<std::string> fast_08 = fast;
