@@ -542,9 +542,12 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
     const double outside_cpu = thread_cpu_ms();
     const StrainStats strain = sim.strain();
     r.animate_strain_max = std::max(r.animate_strain_max, double(strain.max));
-    const BodyFrame& exact = source.exact(frame, exact_scratch);
-    if (options.measure_frames && alive) measure_frame(exact, sim, strain, t, r);
-    if (options.on_frame) options.on_frame(f, t, exact, sim);
+    const bool measured = options.measure_frames && alive;
+    if (measured || options.on_frame) {  // the exact body only when something looks at it
+      const BodyFrame& exact = source.exact(frame, exact_scratch);
+      if (measured) measure_frame(exact, sim, strain, t, r);
+      if (options.on_frame) options.on_frame(f, t, exact, sim);
+    }
     not_animation_ms += outside.ms();
     not_animation_cpu_ms += thread_cpu_ms() - outside_cpu;
     progress.report("animate: frame %ld of %ld (t = %.2f s)", f, frames, t);

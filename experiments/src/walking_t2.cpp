@@ -225,7 +225,8 @@ struct SpeedRun {
   double fps;
   std::string misses;
   FrameTimes times;
-  double strain_pct;  // the largest strain at any frame [%]
+  double strain_pct;   // the largest strain at any frame [%]
+  bool strain_misses;  // over threshold + 1 % at some frame
 };
 
 // the fastest of the runs on walk_07_01 within inside, depth and crossings at every frame (nullptr: none)
@@ -250,7 +251,7 @@ std::string speed_frontier(const std::vector<SpeedRun>& runs) {
   for (const SpeedRun& s : runs) {
     if (s.clip != "walk_07_01") {
       other_clip += std::string(other_clip.empty() ? "" : "; ") + speed_run_text(s);
-    } else if (s.fps >= 100) {
+    } else if (s.fps >= 100 && &s != best) {
       fast += std::string(fast.empty() ? "" : "; ") + speed_run_text(s);
     }
   }
@@ -260,9 +261,9 @@ std::string speed_frontier(const std::vector<SpeedRun>& runs) {
          (best ? "the fastest within inside, depth and crossings at every frame is \"" + best->variant + "\" at " +
                      num(best->fps, 1) + " frames/s"
                : std::string("none stays within inside, depth and crossings at every frame")) +
-         "; at 100 frames/s or more: " + (fast.empty() ? std::string("none") : fast) + "." +
-         (other_clip.empty() ? "" : " On walk_08_02: " + other_clip + ".") +
-         " Strain stays over its limit in every walking row (the table's strain column).";
+         "; " + (best && best->fps >= 100 ? "also " : "") +
+         "at 100 frames/s or more: " + (fast.empty() ? std::string("none") : fast) + "." +
+         (other_clip.empty() ? "" : " On walk_08_02: " + other_clip + ".");
 }
 
 // the benchmark figure of issue 18 (the dress with sleeves, is-cpu, at the papers' clock, prepared ahead) and what
@@ -273,14 +274,14 @@ std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const
   const double body_ms = f.skinning_ms + f.maps_ms;
   const std::string misses = accuracy_misses(r);
   const SpeedRun* best = fastest_within(frontier);
-  const std::string headline = best ? "**" + num(best->fps, 1) +
-                                          " frames/s** at the fastest settings that stay within inside, depth and "
-                                          "crossings at every frame (\"" +
-                                          best->variant + "\": the cloth " + num(best->times.cloth_ms, 1) +
-                                          " ms a frame, the body's side " +
-                                          num(best->times.skinning_ms + best->times.maps_ms, 1) + " ms; strain " +
-                                          num(best->strain_pct, 0) + " %, over its limit as in every walking row), and "
-                                    : std::string();
+  const std::string headline =
+      best ? "**" + num(best->fps, 1) +
+                 " frames/s** at the fastest settings that stay within inside, depth and "
+                 "crossings at every frame (\"" +
+                 best->variant + "\": the cloth " + num(best->times.cloth_ms, 1) + " ms a frame, the body's side " +
+                 num(best->times.skinning_ms + best->times.maps_ms, 1) + " ms; strain " + num(best->strain_pct, 0) +
+                 " %, " + (best->strain_misses ? "over" : "within") + " its limit), and "
+           : std::string();
   return "**Speed** (the dress with sleeves, " + std::to_string(r.vertices) +
          " vertices, is-cpu, walk_07_01, skinning, maps and cloth, the papers' clock with walking Eq. 5's limit and "
          "the next frame prepared on a second thread; " +
@@ -343,6 +344,7 @@ void walking_t2(ExperimentContext& ctx) {
   std::string media, charts, models;
   std::vector<SpeedRun> frontier;
   std::optional<RunResult> speed_run;
+  double proxy_mm = 0;  // the simplified body's largest distance from the exact one, where a row simplifies it
   std::vector<std::string> sets_quick;
   if (ctx.quick()) sets_quick = {"body.start_s=0.1", "body.end_s=0.2", "stop.max_iterations=60"};
   for (std::size_t i = 0; i < 2; ++i) {
@@ -378,9 +380,10 @@ void walking_t2(ExperimentContext& ctx) {
           const bool failed = r.frames == 0 || r.divergence || !dressed(r);
           frontier.push_back({variant.label, variant.clip, failed ? 0.0 : 1 / frame_times(r).s,
                               failed ? std::string("diverged or not dressed") : accuracy_misses(r), frame_times(r),
-                              100 * r.animate_strain_max});
+                              100 * r.animate_strain_max, limit_misses(r).size() > limit_misses(r, false).size()});
           if (variant.row_suffix == "/papers-ahead") speed_run = r;
         }
+        proxy_mm = std::max(proxy_mm, r.proxy_deviation_mm);
         ctx.add_run(r, std::string("walking-t2/") + g.name + "/" + c + variant.row_suffix);
         if (main) charted.emplace_back(c, r);
         if (animated) {
@@ -450,8 +453,10 @@ void walking_t2(ExperimentContext& ctx) {
       "maps on both cores of this machine, and drawn beside the cloth they took longer than the cloth saved). The "
       "rows \"the colliders' body simplified\" (`body.collision_triangles`) hand the colliders a copy of the body "
       "with fewer triangles (edge collapses that keep some of its own vertices and their skin; every exact vertex "
-      "within 2.8 mm of the copy at 6,000 triangles) while the oracle measures against the exact body. And "
-      "\"travelling\" keeps the root's motion (the maps follow the body).\n\n" +
+      "within " +
+          num(proxy_mm, 1) +
+          " mm of the copy) while the oracle measures against the exact body. And "
+          "\"travelling\" keeps the root's motion (the maps follow the body).\n\n" +
           t.str() + "\n" + (speed_run ? speed_figure(*speed_run, paper::kWalkingT2[1], frontier) : std::string()) +
           charts +
           (media.empty() ? std::string()

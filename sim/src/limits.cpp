@@ -112,7 +112,7 @@ void Simulator::limit_velocities(bool contacts_stop_inward) {
     if (contacts_stop_inward) stop_inward_contacts();
     ++timings_.limit_passes;
     if (changes_ == 0) break;
-    // the next pass: a scan when a quarter of the points changed (cheaper than setting their springs' bits)
+    // the next pass: a scan when an eighth of the points or more changed (cheaper than setting their springs' bits)
     scan = 8 * marked_ > x_.cols();
     if (scan) continue;
     visit_bits_.assign(words, 0);
