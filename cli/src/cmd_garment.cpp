@@ -85,6 +85,7 @@ nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const Meshed
            {{"structural", m.mesh.count(SpringKind::kStructural)},
             {"shear", m.mesh.count(SpringKind::kShear)},
             {"flexion", m.mesh.count(SpringKind::kFlexion)}}},
+          {"shortest_structural_cm", 100 * double(m.mesh.shortest(SpringKind::kStructural))},
           {"seams", static_cast<int>(pat.seams.size())},
           {"seam_pairs", static_cast<int>(m.mesh.seam_pairs.cols())},
           {"seam_offset_max_cm", seam_offsets(m)},
@@ -103,6 +104,8 @@ void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern
   std::printf("  vertices       %d\n", m.mesh.vertex_count());
   std::printf("  springs        %d structural, %d shear, %d flexion\n", m.mesh.count(SpringKind::kStructural),
               m.mesh.count(SpringKind::kShear), m.mesh.count(SpringKind::kFlexion));
+  const double shortest_cm = 100 * double(m.mesh.shortest(SpringKind::kStructural));
+  std::printf("  shortest structural spring %.2f cm (%.2f of the spacing)\n", shortest_cm, shortest_cm / m.spacing_cm);
   const auto& q = m.mesh.quads;
   const auto triangles = static_cast<int>((q.row(3).array() == q.row(2).array()).count());
   std::printf("  quads          %d (%d of them triangles, on the outline)\n", static_cast<int>(q.cols()), triangles);

@@ -20,6 +20,13 @@ int ClothMesh::count(SpringKind k) const {
   return static_cast<int>(std::count(kind.begin(), kind.end(), k));
 }
 
+Real ClothMesh::shortest(SpringKind k) const {
+  Real shortest = 0;
+  for (Eigen::Index s = 0; s < springs.cols(); ++s)
+    if (kind[static_cast<std::size_t>(s)] == k && (shortest == 0 || rest_length[s] < shortest)) shortest = rest_length[s];
+  return shortest;
+}
+
 namespace {
 
 // appends the columns of b to a, adding `shift` to every entry

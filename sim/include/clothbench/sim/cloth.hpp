@@ -31,6 +31,8 @@ struct ClothMesh {
   int spring_count() const { return static_cast<int>(springs.cols()); }
   /// Springs of one kind.
   int count(SpringKind k) const;
+  /// The shortest rest length of the springs of one kind [m] (0 when there are none).
+  Real shortest(SpringKind k) const;
   /// The cloth's surface: every quad as two triangles (0 1 2, 0 2 3), a triangle cell (corner 2 repeated as 3)
   /// as one (3 x nt).
   Tris surface_triangles() const;
