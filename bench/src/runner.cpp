@@ -619,7 +619,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   r.integrator = scene.solver.integrator;
   r.regime = to_string(scene.solver.regime);
   r.config_hash = config_hash(scene);
-  r.strain_threshold = scene.solver.limit == Limit::kNone ? 0 : double(scene.solver.threshold);
+  r.strain_threshold = scene.solver.limit == "none" ? 0 : double(scene.solver.threshold);
   // body, cloth, collider, simulator
   const BodySource source(scene);
   BodyFrame frame;

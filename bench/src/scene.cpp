@@ -205,7 +205,10 @@ void read_solver(Section s, SolverParams& p) {
   }
   s.number("dt_fraction", p.dt_fraction, 1e-3, 1);
   s.flag("allow_unstable_dt", p.allow_unstable_dt);
-  s.choice("limit", [&](const std::string& v) { p.limit = parse_limit(v); });
+  s.choice("limit", [&](const std::string& v) {
+    check_limiter(v);
+    p.limit = v;
+  });
   s.number("threshold", p.threshold, 1e-4, 10);
   s.number("stiff_factor", p.stiff_factor, 1, 1e4);
   s.number("limit_passes", p.limit_passes, 1, 1000);
@@ -406,7 +409,7 @@ std::string solver_config(const SolverParams& p) {
   w("dt", double(p.dt))("dt_fraction", double(p.dt_fraction))("allow_unstable_dt", p.allow_unstable_dt);
   w("masses", to_string(p.masses))("limit_after_response", p.limit_after_response);
   w("push_out", p.push_out)("push_speed", double(p.push_speed));
-  w("limit", to_string(p.limit))("threshold", double(p.threshold))("stiff_factor", double(p.stiff_factor));
+  w("limit", p.limit)("threshold", double(p.threshold))("stiff_factor", double(p.stiff_factor));
   w("limit_passes", p.limit_passes)("limit_speed", double(p.limit_speed))(
       "limit_tolerance_mm", 1e3 * double(p.limit_tolerance))("face_queries", p.face_queries);
   w("reaction_force", p.reaction_force)("gravity", p.gravity)("seam_method", to_string(p.seam_method));

@@ -26,7 +26,12 @@ int run_demo(const DemoOptions& o) {
   ClothMesh cloth = make_grid_cloth(o.side, o.side, size / Real(o.side - 1), Vec3(-size / 2, radius + 0.05f, -size / 2),
                                     Vec3::UnitX(), Vec3::UnitZ());
   SolverParams params;
-  params.limit = parse_limit(o.limit);
+  try {
+    check_limiter(o.limit);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("--") + e.what());
+  }
+  params.limit = o.limit;
   Simulator sim(cloth, Material{}, params);
   // the analytic sphere, or any registered collider on a meshed sphere
   std::unique_ptr<Collider> collider;
@@ -68,8 +73,9 @@ void add_demo_command(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("demo", "Drop a square cloth onto a sphere and print speed and accuracy");
   cmd->add_option("--side", opts->side, "Vertices per side of the square cloth")->capture_default_str();
   cmd->add_option("--seconds", opts->seconds, "Simulated time [s]")->capture_default_str();
-  cmd->add_option("--limit", opts->limit, "Super-elasticity limit: none, stiff, position, velocity, velocity-zero, directional")
-      ->capture_default_str();
+  std::string limiters;
+  for (const std::string& name : limiter_names()) limiters += (limiters.empty() ? "" : ", ") + name;
+  cmd->add_option("--limit", opts->limit, "Strain limiter: " + limiters)->capture_default_str();
   cmd->add_option("--collider", opts->collider, "sphere (analytic) or a registered collider on a meshed sphere")
       ->capture_default_str();
   cmd->callback([opts, &action] { action = [opts] { return run_demo(*opts); }; });

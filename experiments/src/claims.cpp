@@ -355,7 +355,7 @@ Claim side_layer_claim(const BodyFrame& body) {
 }
 
 // max strain of a soft square hanging from its top corners (global stretch), as in tests/sim
-Real hanging_strain(Limit limit, int passes) {
+Real hanging_strain(const std::string& limit, int passes) {
   const int n = 21;
   ClothMesh cloth = make_grid_cloth(n, n, 0.03f, Vec3(-0.3f, 1, 0), Vec3::UnitX(), -Vec3::UnitY());
   cloth.attached = {0, n - 1};
@@ -378,8 +378,8 @@ Real hanging_strain(Limit limit, int passes) {
 Claim provot_claim() {
   Claim c{"dressing 4.2-4.3", "velocity modification beats Provot's position modification on global stretch",
           "measured here: 21x21 soft square hanging from two corners, threshold 10 %, 2 s", "", ""};
-  const Real p1 = hanging_strain(Limit::kPosition, 1), v1 = hanging_strain(Limit::kVelocity, 1);
-  const Real p30 = hanging_strain(Limit::kPosition, 30), v30 = hanging_strain(Limit::kVelocity, 30);
+  const Real p1 = hanging_strain("position", 1), v1 = hanging_strain("velocity", 1);
+  const Real p30 = hanging_strain("position", 30), v30 = hanging_strain("velocity", 30);
   c.numbers = "max strain, 1 pass: position " + num(100 * p1, 1) + " %, velocity " + num(100 * v1, 1) +
               " %; 30 passes: " + num(100 * p30, 1) + " % vs " + num(100 * v30, 1) + " %";
   c.verdict = v1 < p1 && v30 < p30 ? "holds" : "fails here: Provot holds the stretch better at equal passes";

@@ -7,6 +7,7 @@
 
 #include "clothbench/sim/mesh_query.hpp"
 #include "clothbench/sim/timer.hpp"
+#include "merged_points.hpp"
 
 namespace clothbench {
 
@@ -45,7 +46,7 @@ void apply_regime(Regime regime, Material& material, SolverParams& params) {
   // velocity modification carries the stretch: the walking paper's directional limit (Eq. 6), passes over the
   // springs after the forces and again after the response (with the contacts), held points first: 32 passes
   // (four left 1 % of the 1,800-vertex shirt's springs past threshold + 1 %, sixteen 0.2 %; results/integrators.md)
-  params.limit = papers ? Limit::kDirectional : stable.limit;
+  params.limit = papers ? "directional" : stable.limit;
   params.limit_passes = papers ? 32 : stable.limit_passes;
   params.seam_stiffness = stable.seam_stiffness;
   params.limit_after_response = papers;
@@ -100,6 +101,7 @@ void validate(const Material& m, const SolverParams& p) {
   require(p.threshold > 0 && p.threshold < 1, "threshold", "in (0, 100) %", p.threshold);
   require(p.stiff_factor >= 1, "stiff_factor", ">= 1", p.stiff_factor);
   require(p.limit_passes >= 1, "limit_passes", ">= 1", p.limit_passes);
+  check_limiter(p.limit);
   require(p.gravity.allFinite(), "gravity", "finite", p.gravity.norm());
   require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m (0 = automatic)", p.seam_stiffness);
   require(p.seam_reach > 0, "seam_reach", "> 0 m", p.seam_reach);
@@ -136,6 +138,8 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   mesh_.validate("cloth");
   validate(material_, params_);
   integrator_ = IntegratorPtr(make_integrator(params_.integrator, params_.integration));
+  limiter_ = LimiterPtr(make_limiter(params_.limit, {params_.threshold, params_.limit_passes, params_.limit_speed,
+                                                      params_.limit_tolerance, params_.stiff_factor}));
   const Eigen::Index nv = mesh_.positions.cols();
   m_ = mesh_.vertex_area * material_.density;
   // dressing Eq. 3: "m is the mass of each point", one mass for all
@@ -148,7 +152,6 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   mid_.resize(3, mesh_.quads.cols());
   merged_.assign(static_cast<std::size_t>(mesh_.seam_pairs.cols()), 0);
   start_box_ = bounding_box(x_);
-  build_adjacency();
   // time step: given (explicit Euler's checked against Eq. 4), or the integrator's automatic one
   const Real bound = stable_dt();
   if (params_.dt == 0) {
@@ -162,31 +165,9 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   }
 }
 
-void Simulator::build_adjacency() {
-  // every spring and seam pair, both ways, as compressed rows
-  const Eigen::Index nv = mesh_.positions.cols();
-  std::vector<std::pair<int, int>> edges;
-  for (Eigen::Index s = 0; s < mesh_.springs.cols(); ++s) edges.emplace_back(mesh_.springs(0, s), mesh_.springs(1, s));
-  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
-    edges.emplace_back(mesh_.seam_pairs(0, p), mesh_.seam_pairs(1, p));
-  adj_start_.assign(static_cast<std::size_t>(nv + 1), 0);
-  for (const auto& [a, b] : edges) ++adj_start_[static_cast<std::size_t>(a + 1)], ++adj_start_[static_cast<std::size_t>(b + 1)];
-  for (std::size_t i = 1; i < adj_start_.size(); ++i) adj_start_[i] += adj_start_[i - 1];
-  adj_.resize(static_cast<std::size_t>(adj_start_.back()));
-  adj_edge_.resize(adj_.size());
-  std::vector<int> fill(adj_start_.begin(), adj_start_.end() - 1);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const auto [a, b] = edges[e];
-    const auto at_a = static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++);
-    const auto at_b = static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++);
-    adj_[at_a] = b, adj_[at_b] = a;
-    adj_edge_[at_a] = adj_edge_[at_b] = static_cast<int>(e);
-  }
-}
-
 void Simulator::set_stiffness() {
   // stiffness per spring from its kind (Eq. 2); kStiff raises all of them
-  const Real factor = params_.limit == Limit::kStiff ? params_.stiff_factor : Real(1);
+  const Real factor = limiter_->stiffness_factor();
   const Real given[kSpringKinds] = {material_.k_structural, material_.k_shear, material_.k_flexion};
   const Real ratio[kSpringKinds] = {1, Real(1) / 3, Real(1) / 6};  // automatic ones keep the defaults' 60:20:10
   const bool seam_auto = params_.seam_stiffness == 0;
@@ -266,7 +247,8 @@ bool Simulator::step() {
   const bool drifts = drift_.cols() == x_.cols();
   if (drifts) v_ += drift_ / dt_;
   Stopwatch limit;
-  limit_velocities();
+  LimitState state = limit_state();
+  limiter_->limit_velocities(state, false);
   double limit_ms = limit.ms();
   if (params_.seam_method == SeamMethod::kElastic) cap_seam_speeds();
   if (phase_ == Phase::kSew && params_.seam_method == SeamMethod::kAttraction) attract_seams();
@@ -278,16 +260,19 @@ bool Simulator::step() {
   // the limit again, each pass followed by the contacts' non-penetration: the body stops the cloth's motion
   // into it, the limit its stretch along it (a Gauss-Seidel sweep over both constraints)
   limit.restart();
-  if (params_.limit_after_response && collider_) limit_velocities(true);
+  if (params_.limit_after_response && collider_) limiter_->limit_velocities(state, true);
   limit_ms += limit.ms();
   integrate_positions();
   if (drifts) v_ -= drift_ / dt_;  // back to the end-of-step velocity, with what limits and response changed
-  limit_positions();
+  limit.restart();
+  limiter_->limit_positions(state);
+  limit_ms += limit.ms();
   merge_seams();
   cs_ms += cs.ms();
   timings_.cdr_ms += cdr_ms;
   timings_.cs_ms += cs_ms;
   timings_.limit_ms += limit_ms;
+  timings_.limit_passes = limiter_->passes();
   ++timings_.iterations;
   ++iteration_;
   return check_divergence();
@@ -308,6 +293,10 @@ void Simulator::detect() {
                            x_.col(mesh_.quads(3, q)));
   collider_->query(PointsView(mid_.data(), static_cast<std::size_t>(nq)),
                    {contacts_.data() + nv, static_cast<std::size_t>(nq)});
+}
+
+LimitState Simulator::limit_state() {
+  return {mesh_, x_, v_, m_, inv_m_, contacts_, merged_groups_, phase_gravity(), dt_};
 }
 
 Vec3 Simulator::phase_gravity() const {
@@ -414,30 +403,7 @@ void Simulator::merge_seams() {
     grown = true;
   }
   if (grown) group_merged_pairs();
-  move_merged_as_one(true);
-}
-
-void Simulator::move_merged_as_one(bool positions) {
-  // each group moves as one point: the mass-weighted mean velocity (and position), or its attached
-  // members' when it has any
-  for (const auto& group : merged_groups_) {
-    Vec3 x = Vec3::Zero(), v = Vec3::Zero();
-    Real w = 0;
-    const bool attached = std::any_of(group.begin(), group.end(), [&](int i) { return inv_m_[i] == 0; });
-    for (int i : group) {
-      if (attached && inv_m_[i] > 0) continue;
-      x += m_[i] * x_.col(i);
-      v += m_[i] * v_.col(i);
-      w += m_[i];
-    }
-    for (int i : group) {
-      if (inv_m_[i] == 0) continue;
-      const Real change = (v_.col(i) - v / w).norm();
-      if (change > Real(1e-6)) mark_changed(i, change);  // changed by more than 1 um/s
-      col(v_, i) = v / w;
-      if (positions) col(x_, i) = x / w;
-    }
-  }
+  move_as_one(merged_groups_, m_, inv_m_, v_, &x_, [](int, Real) {});
 }
 
 void Simulator::group_merged_pairs() {

@@ -87,7 +87,7 @@ TEST(Runner, DivergenceIsReportedNotThrown) {
   Scene s = small_tablecloth();
   s.solver.allow_unstable_dt = true;
   s.solver.dt = 0.05f;  // about 40x the Eq. 4 bound
-  s.solver.limit = Limit::kNone;
+  s.solver.limit = "none";
   RunOptions quiet;
   quiet.progress = false;
   const RunResult r = run_scene(s, quiet);

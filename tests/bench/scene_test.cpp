@@ -25,7 +25,7 @@ TEST(Scene, DefaultsWhenEmpty) {
   EXPECT_EQ(s.collider, "is-cpu");
   EXPECT_EQ(s.body.file, "debian:human");
   EXPECT_TRUE(s.garments.empty());
-  EXPECT_EQ(s.solver.limit, Limit::kVelocity);
+  EXPECT_EQ(s.solver.limit, "velocity");
   EXPECT_EQ(s.collider_options.map_size, 320);
 }
 
@@ -67,7 +67,7 @@ drape_max_s = 0.5
   EXPECT_DOUBLE_EQ(s.garments[1].spacing_cm, 3);
   EXPECT_FLOAT_EQ(s.material.k_structural, 40);
   EXPECT_FLOAT_EQ(s.solver.dt, 0.0002f);
-  EXPECT_EQ(s.solver.limit, Limit::kDirectional);
+  EXPECT_EQ(s.solver.limit, "directional");
   EXPECT_TRUE(s.solver.face_queries);
   EXPECT_EQ(s.collider, "embree");
   EXPECT_EQ(s.collider_options.map_size, 512);
@@ -89,7 +89,7 @@ TEST(Scene, ErrorsNameFileLineAndKey) {
 TEST(Scene, SetOverridesAndItsErrors) {
   const Scene s = parse_scene("[[garment]]\nfile = \"a.pattern\"\n", "s.toml",
                               {"solver.limit=none", "garment.vertices=1800", "collider.name=fcl", "stop.sew=false"});
-  EXPECT_EQ(s.solver.limit, Limit::kNone);
+  EXPECT_EQ(s.solver.limit, "none");
   EXPECT_EQ(s.garments[0].vertices, 1800);
   EXPECT_EQ(s.collider, "fcl");
   EXPECT_FALSE(s.stop.sew);

@@ -26,7 +26,7 @@ Simulator two_particles(const std::string& integrator, Real dt, IntegratorParams
   m.damping = 0;
   SolverParams p;
   p.gravity = Vec3::Zero();
-  p.limit = Limit::kNone;
+  p.limit = "none";
   p.dt = dt;
   p.integrator = integrator;
   p.integration = ip;

@@ -54,7 +54,7 @@ TEST(Simulator, TwoParticleSpringPeriodMatchesTheory) {
   mat.damping = 0;
   SolverParams p;
   p.gravity = Vec3::Zero();
-  p.limit = Limit::kNone;
+  p.limit = "none";
   p.dt = 1e-4f;
   Simulator sim(test::two_particles(0.1f, 0.01f), mat, p);
   // relative coordinate oscillates with omega = sqrt(2k/m)
@@ -75,7 +75,7 @@ TEST(Simulator, TwoParticleSpringPeriodMatchesTheory) {
 // run a pinned square under gravity; returns true when it did not diverge
 bool runs_stably(Real dt_multiple, int steps) {
   SolverParams p;
-  p.limit = Limit::kNone;
+  p.limit = "none";
   p.allow_unstable_dt = true;
   Simulator probe(pinned_square(15, 0.5f), soft_material(), p);
   p.dt = dt_multiple * probe.stable_dt();
@@ -99,7 +99,7 @@ ClothMesh seam_pair(Real gap, Real ratio) {
 
 SolverParams seam_params() {
   SolverParams p;
-  p.limit = Limit::kNone;
+  p.limit = "none";
   p.seam_reach = 0.05f;
   p.seam_speed = 100;  // no speed cap here
   p.merge_distance = 1e-7f;
@@ -143,7 +143,7 @@ TEST(Simulator, SeamsCloseNoFasterThanTheirSpeed) {
   Material mat;
   mat.damping = 0;
   SolverParams p;
-  p.limit = Limit::kNone;
+  p.limit = "none";
   p.merge_distance = 1e-4f;
   Simulator sim(seam_pair(0.3f, 100), mat, p);
   sim.set_phase(Phase::kSew);
@@ -192,7 +192,7 @@ TEST(Simulator, LimitsShortenAnOverStretchedSpringAtLimitSpeed) {
   // a spring already 50 % long (pinched by the body, or a seam merged across it) is shortened at
   // limit_speed, not by all of its excess in one step (0.04 m / dt = 400 m/s, a speed that outlives the
   // step and diverged a walking dress); with limit_speed 0 only its own force shortens it
-  for (Limit limit : {Limit::kVelocity, Limit::kDirectional}) {
+  for (const char* limit : {"velocity", "directional"}) {
     for (Real limit_speed : {0.f, 2.f}) {
       Material mat;
       mat.damping = 0;
@@ -206,7 +206,7 @@ TEST(Simulator, LimitsShortenAnOverStretchedSpringAtLimitSpeed) {
       const double spring_only = mat.k_structural * 0.05 * sim.dt() * 2 / sim.masses()[0];
       const double closing = (sim.velocities().col(0) - sim.velocities().col(1)).x();
       const double expected = std::max(spring_only, double(limit_speed));
-      EXPECT_NEAR(closing, expected, 1e-3 * expected) << to_string(limit) << ", limit_speed " << limit_speed;
+      EXPECT_NEAR(closing, expected, 1e-3 * expected) << limit << ", limit_speed " << limit_speed;
     }
   }
 }
@@ -215,7 +215,7 @@ TEST(Simulator, TheDirectionalLimitSeesGravityOnlyWhenItActs) {
   // walking Eq. 6's v_grav = g dt is the velocity gravity adds in the step: none while sewing (gravity off),
   // where, against a static body, the directional rule has no direction and averages as Eq. 5 does
   // (taking the scene's g there made the papers' dress pull one panel across the body and never sew)
-  const auto after_one_step = [](Limit limit, Phase phase) {
+  const auto after_one_step = [](const char* limit, Phase phase) {
     Material mat;
     mat.damping = 0;
     mat.k_structural = 1e-3f;  // the limit, not the spring, decides
@@ -231,11 +231,11 @@ TEST(Simulator, TheDirectionalLimitSeesGravityOnlyWhenItActs) {
     EXPECT_TRUE(sim.step());
     return Points3(sim.velocities());
   };
-  const Points3 averaged = after_one_step(Limit::kVelocity, Phase::kSew);
-  EXPECT_LT((after_one_step(Limit::kDirectional, Phase::kSew) - averaged).norm(), 1e-5f);
+  const Points3 averaged = after_one_step("velocity", Phase::kSew);
+  EXPECT_LT((after_one_step("directional", Phase::kSew) - averaged).norm(), 1e-5f);
   // with gravity on the rear (upper) point catches up with the front one instead
-  const Points3 falling = after_one_step(Limit::kDirectional, Phase::kDrape);
-  EXPECT_GT((falling - after_one_step(Limit::kVelocity, Phase::kDrape)).norm(), 0.1f);
+  const Points3 falling = after_one_step("directional", Phase::kDrape);
+  EXPECT_GT((falling - after_one_step("velocity", Phase::kDrape)).norm(), 0.1f);
   EXPECT_LT(falling(1, 0), 0.f);  // the upper point now moves down with the lower one
 }
 
@@ -265,7 +265,7 @@ ClothMesh chain(int n) {
 // chain), so the automatic dt also respects the Gershgorin bound and stays stable
 TEST(Simulator, AutomaticDtRespectsTheGershgorinBound) {
   SolverParams p;
-  p.limit = Limit::kNone;
+  p.limit = "none";
   p.gravity = Vec3::Zero();
   Simulator sim(chain(6), soft_material(), p);
   EXPECT_LT(sim.spectral_dt(), sim.stable_dt());
@@ -309,14 +309,14 @@ TEST(Simulator, InvalidParametersNameTheParameter) {
   EXPECT_NE(message([](Material& m, SolverParams&) { m.damping = std::nanf(""); }).find("damping"), std::string::npos);
   EXPECT_NE(message([](Material&, SolverParams& p) { p.threshold = 1.5f; }).find("threshold"), std::string::npos);
   EXPECT_NE(message([](Material&, SolverParams& p) { p.threshold = -0.1f; }).find("threshold"), std::string::npos);
-  EXPECT_THROW(parse_limit("rubber"), std::invalid_argument);
+  EXPECT_THROW(check_limiter("rubber"), std::invalid_argument);
   EXPECT_THROW(parse_seam_method("glue"), std::invalid_argument);
 }
 
 // max structural strain of a soft square hanging in a vertical plane from its two top corners
 // (a global stretch: the whole weight hangs from two points), the largest over the second half of
 // `seconds` (after the first swing), sampled every 10 iterations; nullopt if diverged
-std::optional<Real> hanging_strain(Limit limit, int passes, Real seconds = 2.0f) {
+std::optional<Real> hanging_strain(const std::string& limit, int passes, Real seconds = 2.0f) {
   const int n = 21;
   const Real size = 0.6f;
   ClothMesh c = make_grid_cloth(n, n, size / Real(n - 1), Vec3(-size / 2, 1, 0), Vec3::UnitX(), -Vec3::UnitY());
@@ -343,14 +343,14 @@ std::optional<Real> hanging_strain(Limit limit, int passes, Real seconds = 2.0f)
 std::string show(const std::optional<Real>& s) { return s ? std::to_string(*s) : std::string("diverged"); }
 
 TEST(Simulator, VelocityLimitsHoldStrainWhereNoneStretches) {
-  const auto none = hanging_strain(Limit::kNone, 1);
-  const auto velocity = hanging_strain(Limit::kVelocity, 100);
-  const auto zero = hanging_strain(Limit::kVelocityZero, 100);
-  const auto directional = hanging_strain(Limit::kDirectional, 100);
+  const auto none = hanging_strain("none", 1);
+  const auto velocity = hanging_strain("velocity", 100);
+  const auto zero = hanging_strain("velocity-zero", 100);
+  const auto directional = hanging_strain("directional", 100);
   // the papers' single pass per iteration, reported (see the issue note: it leaks under a sustained load)
-  const auto velocity1 = hanging_strain(Limit::kVelocity, 1);
-  const auto zero1 = hanging_strain(Limit::kVelocityZero, 1);
-  const auto directional1 = hanging_strain(Limit::kDirectional, 1);
+  const auto velocity1 = hanging_strain("velocity", 1);
+  const auto zero1 = hanging_strain("velocity-zero", 1);
+  const auto directional1 = hanging_strain("directional", 1);
   std::printf(
       "[ strain  ] threshold 0.10: none %s | 100 passes: velocity %s velocity-zero %s directional %s | "
       "1 pass: velocity %s velocity-zero %s directional %s\n",
@@ -366,7 +366,7 @@ TEST(Simulator, VelocityLimitsHoldStrainWhereNoneStretches) {
 
 // a 15 x 15 tablecloth, 1 m a side, dropped 5 cm above a sphere (r 0.25 m) that after 1 s moves along +x at
 // 1 m/s for 1 s (walking Fig. 8, small); max structural strain at the end, nullopt if diverged
-std::optional<Real> moving_sphere_strain(Limit limit) {
+std::optional<Real> moving_sphere_strain(const std::string& limit) {
   ClothMesh cloth = make_grid_cloth(15, 15, 1.0f / 14, Vec3(-0.5f, 0.8f, -0.5f), Vec3::UnitX(), Vec3::UnitZ());
   SolverParams p;
   p.limit = limit;
@@ -396,9 +396,9 @@ std::optional<Real> moving_sphere_strain(Limit limit) {
 
 TEST(Simulator, DirectionalLimitHoldsOnAMovingSphere) {
   // the literal rear-takes-front rule diverged here during the drape; the energy guard keeps it stable
-  const auto none = moving_sphere_strain(Limit::kNone);
-  const auto velocity = moving_sphere_strain(Limit::kVelocity);
-  const auto directional = moving_sphere_strain(Limit::kDirectional);
+  const auto none = moving_sphere_strain("none");
+  const auto velocity = moving_sphere_strain("velocity");
+  const auto directional = moving_sphere_strain("directional");
   std::printf("[ strain  ] moving sphere, threshold 0.05: none %s velocity %s directional %s\n", show(none).c_str(),
               show(velocity).c_str(), show(directional).c_str());
   ASSERT_TRUE(none && directional);
@@ -410,19 +410,19 @@ TEST(Simulator, PositionVersusVelocityOnGlobalStretch) {
   // dressing 4.2-4.3 claim velocity modification beats Provot on a global stretch; both are
   // measured here with the same number of passes and reported (the claims experiment reads them)
   for (int passes : {1, 30}) {
-    const auto position = hanging_strain(Limit::kPosition, passes);
-    const auto velocity = hanging_strain(Limit::kVelocity, passes);
+    const auto position = hanging_strain("position", passes);
+    const auto velocity = hanging_strain("velocity", passes);
     std::printf("[ strain  ] global stretch, %d passes: position (Provot) %s, velocity %s\n", passes,
                 show(position).c_str(), show(velocity).c_str());
     ASSERT_TRUE(position.has_value());
-    EXPECT_LT(*position, *hanging_strain(Limit::kNone, 1));  // Provot limits the stretch
+    EXPECT_LT(*position, *hanging_strain("none", 1));  // Provot limits the stretch
   }
 }
 
 TEST(Simulator, StiffLimitShrinksTheTimeStep) {
   SolverParams p;
   Simulator plain(pinned_square(5, 0.2f), soft_material(), p);
-  p.limit = Limit::kStiff;
+  p.limit = "stiff";
   p.stiff_factor = 16;
   Simulator stiff(pinned_square(5, 0.2f), soft_material(), p);
   EXPECT_NEAR(stiff.dt() / plain.dt(), 0.25, 1e-5);  // Eq. 4: dt ~ 1/sqrt(K)
@@ -443,46 +443,42 @@ TEST(CollisionResponse, HandComputedEq15) {
   EXPECT_TRUE(test::near_vec(collision_response(Vec3(0, 2, 0), c, 0.5f, 0.2f), Vec3(0, 2, 0), 1e-6));
 }
 
-TEST(LimitStretchVelocity, DirectionalRulePicksRearPointBySignOfCos) {
+TEST(StretchRules, DirectionalRulePicksRearPointBySignOfCos) {
   // cos > 0: p1 is the rear point and takes p2's component
-  auto [a1, b1] = limit_stretch_velocity(Limit::kDirectional, -3, 1, 0.9f);
+  auto [a1, b1] = directional_stretch(-3, 1, 0.9f, 1, 1, 0, false);
   EXPECT_FLOAT_EQ(a1, 1);
   EXPECT_FLOAT_EQ(b1, 1);
   // cos < 0: p2 is the rear point
-  auto [a2, b2] = limit_stretch_velocity(Limit::kDirectional, -1, 3, -0.9f);
+  auto [a2, b2] = directional_stretch(-1, 3, -0.9f, 1, 1, 0, false);
   EXPECT_FLOAT_EQ(a2, -1);
   EXPECT_FLOAT_EQ(b2, -1);
-  auto [a3, b3] = limit_stretch_velocity(Limit::kDirectional, -1, 3, 0.2f);  // perpendicular: Eq. 5
+  auto [a3, b3] = directional_stretch(-1, 3, 0.2f, 1, 1, 0, false);  // perpendicular: Eq. 5
   EXPECT_FLOAT_EQ(a3, 1);
   EXPECT_FLOAT_EQ(b3, 1);
-  auto [a4, b4] = limit_stretch_velocity(Limit::kVelocityZero, -1, 3, 0);
-  EXPECT_FLOAT_EQ(a4, 0);
-  EXPECT_FLOAT_EQ(b4, 0);
 }
 
-TEST(LimitStretchVelocity, TheLiteralDirectionalRuleCatchesUpWhateverTheEnergy) {
+TEST(StretchRules, TheLiteralDirectionalRuleCatchesUpWhateverTheEnergy) {
   // walking Eq. 6 as stated: p1 (rear) takes p2's 3, where ours averages to 1
-  auto [a1, b1] = limit_stretch_velocity(Limit::kDirectionalLiteral, -1, 3, 0.9f);
+  auto [a1, b1] = directional_stretch(-1, 3, 0.9f, 1, 1, 0, true);
   EXPECT_FLOAT_EQ(a1, 3);
   EXPECT_FLOAT_EQ(b1, 3);
-  auto [a2, b2] = limit_stretch_velocity(Limit::kDirectionalLiteral, -1, 3, 0.2f);  // perpendicular: Eq. 5
+  auto [a2, b2] = directional_stretch(-1, 3, 0.2f, 1, 1, 0, true);  // perpendicular: Eq. 5
   EXPECT_FLOAT_EQ(a2, 1);
   EXPECT_FLOAT_EQ(b2, 1);
-  EXPECT_EQ(parse_limit("directional-literal"), Limit::kDirectionalLiteral);
-  EXPECT_STREQ(to_string(Limit::kDirectionalLiteral), "directional-literal");
+  EXPECT_NO_THROW(check_limiter("directional-literal"));
 }
 
-TEST(LimitStretchVelocity, CatchingUpNeverAddsKineticEnergy) {
+TEST(StretchRules, CatchingUpNeverAddsKineticEnergy) {
   // p1 catching up with p2 (3) would raise 1 + 9 to 9 + 9: Eq. 5 instead
-  auto [a1, b1] = limit_stretch_velocity(Limit::kDirectional, -1, 3, 0.9f);
+  auto [a1, b1] = directional_stretch(-1, 3, 0.9f, 1, 1, 0, false);
   EXPECT_FLOAT_EQ(a1, 1);
   EXPECT_FLOAT_EQ(b1, 1);
   // a target relative velocity is kept by both rules: the rear point ends `target` behind the front
-  auto [a2, b2] = limit_stretch_velocity(Limit::kDirectional, -3, 1, 0.9f, 1, 1, -0.5f);
+  auto [a2, b2] = directional_stretch(-3, 1, 0.9f, 1, 1, -0.5f, false);
   EXPECT_FLOAT_EQ(a2, 1.5f);
   EXPECT_FLOAT_EQ(b2, 1);
   // mass-weighted Eq. 5 keeps momentum with the target: 2 (-1) + 1 (3) = 1 = 2 a + b, b - a = 0.3
-  auto [a3, b3] = limit_stretch_velocity(Limit::kVelocity, -1, 3, 0, 2, 1, 0.3f);
+  auto [a3, b3] = average_stretch(-1, 3, 2, 1, 0.3f);
   EXPECT_NEAR(2 * a3 + b3, 1, 1e-6);
   EXPECT_NEAR(b3 - a3, 0.3f, 1e-6);
 }
@@ -491,7 +487,7 @@ TEST(Simulator, VelocityLimitEndsATurningSpringAtItsLimit) {
   // a spring turning so fast that its perpendicular motion alone would stretch it past the limit in one step:
   // split along its end-of-step line, the limit ends the step at exactly (1 + threshold) l0, with no more
   // closing speed than that needs (along the start line no speed could, and the old split asked for 20 m/s)
-  for (Limit limit : {Limit::kVelocity, Limit::kDirectional}) {
+  for (const char* limit : {"velocity", "directional"}) {
     Material mat;
     mat.damping = 0;
     mat.k_structural = mat.k_shear = mat.k_flexion = 1e-6f;
@@ -503,8 +499,8 @@ TEST(Simulator, VelocityLimitEndsATurningSpringAtItsLimit) {
     sim.velocities().col(1) = Vec3(0, 30, 0);  // 15 cm sideways in one step
     ASSERT_TRUE(sim.step());
     const Vec3 d = sim.positions().col(1) - sim.positions().col(0);
-    EXPECT_NEAR(d.norm(), 0.11, 1e-4) << to_string(limit);
-    EXPECT_LT(sim.velocities().norm(), 30.0f) << to_string(limit) << ": the limit added speed";
+    EXPECT_NEAR(d.norm(), 0.11, 1e-4) << limit;
+    EXPECT_LT(sim.velocities().norm(), 30.0f) << limit << ": the limit added speed";
   }
 }
 
@@ -527,7 +523,7 @@ TEST(Simulator, OnePassOfTheLimitHoldsAChainFromItsSupport) {
   c.panel_names = {"chain"};
   c.attached = {0};
   Real strain[2] = {};
-  for (Limit limit : {Limit::kVelocity, Limit::kDirectional}) {
+  for (const char* limit : {"velocity", "directional"}) {
     Material m;
     m.k_structural = 0.01f;  // 30 springs of this would stretch 150 % under the chain's weight
     SolverParams p;
@@ -538,7 +534,7 @@ TEST(Simulator, OnePassOfTheLimitHoldsAChainFromItsSupport) {
     for (int i = 0; i < 400 && sim.step(); ++i) {
     }
     ASSERT_FALSE(sim.divergence().has_value()) << sim.divergence()->reason;
-    strain[limit == Limit::kDirectional] = sim.strain().max;
+    strain[std::string(limit) == "directional"] = sim.strain().max;
   }
   std::printf("[ chain   ] one pass: velocity %.3f, directional %.4f\n", strain[0], strain[1]);
   EXPECT_LE(strain[1], 0.11f);
@@ -553,7 +549,7 @@ TEST(Simulator, APointInsideTheBodyIsBroughtToItsSurface) {
     m.damping = 0;
     m.k_structural = m.k_shear = m.k_flexion = 1e-6f;
     SolverParams p;
-    p.limit = Limit::kNone;
+    p.limit = "none";
     p.push_out = push_out;
     p.dt = 0.005f;
     ClothMesh c = test::two_particles(0.1f, 0);
@@ -619,7 +615,7 @@ TEST(Simulator, FaceQueryResponseKeepsTheVerticesRelativeMotion) {
   m.damping = 0;
   ClothMesh quad = make_grid_cloth(2, 2, 0.2f, Vec3(-0.1f, 1.001f, -0.1f), Vec3::UnitX(), Vec3::UnitZ());
   SolverParams p;
-  p.limit = Limit::kNone;
+  p.limit = "none";
   p.face_queries = true;
   p.dt = 1e-5f;
   Simulator sim(quad, m, p);
@@ -677,7 +673,7 @@ TEST(Simulator, DampingPerUnitMassGivesLightAndHeavyOneTerminalVelocity) {
   Material m;
   m.damping = 5;  // [1/s]: terminal speed g / c
   SolverParams p;
-  p.limit = Limit::kNone;
+  p.limit = "none";
   p.dt = 1e-3f;
   Simulator sim(free_pair(100), m, p);
   ASSERT_NEAR(sim.masses()[0] / sim.masses()[1], 100, 1e-3);

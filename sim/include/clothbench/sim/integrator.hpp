@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "clothbench/sim/clone_ptr.hpp"
 #include "clothbench/sim/cloth.hpp"
 #include "clothbench/sim/collider.hpp"
 
@@ -80,23 +81,7 @@ void check_integrator(const std::string& name);
 /// A new integrator by name (check_integrator's error otherwise).
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const IntegratorParams& params);
 
-/// A unique_ptr<Integrator> that copies by clone() (the Simulator is copyable).
-class IntegratorPtr {
- public:
-  IntegratorPtr() = default;
-  explicit IntegratorPtr(std::unique_ptr<Integrator> p) : p_(std::move(p)) {}
-  IntegratorPtr(const IntegratorPtr& o) : p_(o.p_ ? o.p_->clone() : nullptr) {}
-  IntegratorPtr& operator=(const IntegratorPtr& o) {
-    if (this != &o) p_ = o.p_ ? o.p_->clone() : nullptr;
-    return *this;
-  }
-  IntegratorPtr(IntegratorPtr&&) = default;
-  IntegratorPtr& operator=(IntegratorPtr&&) = default;
-  Integrator* operator->() const { return p_.get(); }
-  Integrator& operator*() const { return *p_; }
-
- private:
-  std::unique_ptr<Integrator> p_;
-};
+/// The Simulator's integrator, copied by clone().
+using IntegratorPtr = ClonePtr<Integrator>;
 
 }  // namespace clothbench

@@ -11,6 +11,7 @@
 #include "clothbench/sim/cloth.hpp"
 #include "clothbench/sim/collider.hpp"
 #include "clothbench/sim/integrator.hpp"
+#include "clothbench/sim/limiter.hpp"
 
 namespace clothbench {
 
@@ -28,12 +29,6 @@ struct Material {
   Real reflection = 0.0f;    ///< C_refl of Eq. 12/15
 };
 
-/// How super-elasticity is limited (dressing section 4, walking section 3).
-enum class Limit { kNone, kStiff, kPosition, kVelocity, kVelocityZero, kDirectional, kDirectionalLiteral };
-const char* to_string(Limit limit);
-/// Parses "none", "stiff", "position", "velocity", "velocity-zero", "directional", "directional-literal"; throws
-/// std::invalid_argument naming the accepted values otherwise.
-Limit parse_limit(const std::string& name);
 
 /// How panels are pulled together along seams.
 enum class SeamMethod { kElastic, kAttraction };
@@ -71,10 +66,10 @@ struct SolverParams {
   Regime regime = Regime::kStable;       ///< the preset these parameters came from (apply_regime); a label
   MassModel masses = MassModel::kArea;   ///< point masses
   bool allow_unstable_dt = false;        ///< explicit-euler: accept a given dt above the Eq. 4 bound (stability studies)
-  Limit limit = Limit::kVelocity;        ///< super-elasticity limit
+  std::string limit = "velocity";        ///< the strain limiter, by name (limiter_names(); limiter.hpp)
   Real threshold = 0.10f;                ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
-  Real stiff_factor = 10.f;              ///< Limit::kStiff multiplies every stiffness by this
-  int limit_passes = 1;                  ///< passes of the position/velocity limit over all springs per iteration
+  Real stiff_factor = 10.f;              ///< the `stiff` limit multiplies every stiffness by this
+  int limit_passes = 1;                  ///< passes of the limit over the springs per call (the most)
   /// velocity limits run once more after the collision response, each pass followed by stopping motion into the
   /// body of the vertices in contact (the response would otherwise undo the limit where the body holds the cloth;
   /// papers regime)
@@ -117,8 +112,8 @@ struct StrainStats {
 struct SimTimings {
   double cdr_ms = 0;  ///< collision detection (collider query) and response
   double cs_ms = 0;   ///< cloth simulation: forces (the reaction force of Eq. 16 included), integration, limits, seaming
-  double limit_ms = 0;  ///< of cs_ms: the velocity limits' passes (super-elasticity, walking Eqs. 5-6)
-  long limit_passes = 0;  ///< velocity limit passes run (each call stops early once a pass changes nothing)
+  double limit_ms = 0;  ///< of cs_ms: the strain limiter (super-elasticity: dressing 4, walking 3)
+  long limit_passes = 0;  ///< the limiter's passes over the springs (a sweep stops early once a pass changes nothing)
   long iterations = 0;
 };
 
@@ -127,22 +122,6 @@ struct SimTimings {
 /// heading into the body (v_n . n < 0); a point already leaving keeps its normal component.
 Vec3 collision_response(const Vec3& v, const Contact& contact, Real friction, Real reflection);
 
-/// Stretching velocity components (va, vb along the unit vector p2 - p1) [m/s] of an over-elongated
-/// spring after a velocity limit: kVelocityZero zeroes both (dressing 4.3), kVelocity averages them
-/// (walking Eq. 5), kDirectional averages when |cos_alpha| < 0.3 and otherwise gives the rear point
-/// the front one's component (walking Eq. 6 rules; cos_alpha > 0: the rear point is p1), unless that
-/// would add kinetic energy to the pair, where it averages (our guard: the literal rule diverges).
-/// Averages are weighted by the end masses wa, wb (equal in the papers). `target` is the relative
-/// velocity vb - va the spring keeps [m/s] (0: no further elongation; the Simulator passes the one that
-/// ends the step at exactly the threshold length; kVelocityZero ignores it). Other limits return
-/// (va, vb) unchanged. The Simulator adds one rule of ours to kDirectional: a rear point that is
-/// held (attached, in contact with the body, or already following a held point this iteration)
-/// cannot catch up, so the front follows it instead. Taken literally (without both rules of ours)
-/// the rule diverged on the hanging square of tests/sim when we tried it. kDirectionalLiteral is walking
-/// Eq. 6 with its rules as stated: no energy guard here, and no held rear point in the Simulator
-/// (walking-f8 runs both).
-std::pair<Real, Real> limit_stretch_velocity(Limit limit, Real va, Real vb, Real cos_alpha, Real wa = 1, Real wb = 1,
-                                             Real target = 0);
 
 /// One cloth, one collider (not owned), one integrator.
 class Simulator {
@@ -210,23 +189,10 @@ class Simulator {
   void detect();
   ForceModel force_model() const;
   Vec3 phase_gravity() const;  ///< the gravity acting in the current phase
-  struct SweptSpring {
-    int a, b;      // the spring's ends
-    Real max_len;  // (1 + threshold) l0
-  };
-  void limit_velocities(bool contacts_stop_inward = false);
-  void stop_inward_contacts();
-  void order_springs_from_held();
-  void move_merged_as_one(bool positions);
-  void mark_changed(int i, Real change);
-  void set_visit_bits(int i, std::size_t after);
-  void limit_spring(Limit l, const Vec3& v_grav, const SweptSpring& e);
-  Vec3 spring_object_velocity(int a, int b) const;
   void cap_seam_speeds();
   void attract_seams();
   void respond();
   void integrate_positions();
-  void limit_positions();
   void merge_seams();
   void group_merged_pairs();
   bool check_divergence();
@@ -235,7 +201,6 @@ class Simulator {
   Material material_;
   SolverParams params_;
   void set_stiffness();
-  void build_adjacency();
 
   Real k_kind_[kSpringKinds] = {};  // stiffness per spring kind [N/m]
   Scalars k_;          // stiffness per spring [N/m] (ns)
@@ -245,27 +210,16 @@ class Simulator {
   Points3 x_, v_, f_;  // positions [m], velocities [m/s], forces [N] (3 x nv)
   Points3 drift_;      // the integrator's position change besides dt v (3 x nv, or empty when none)
   IntegratorPtr integrator_;
+  LimiterPtr limiter_;
+  /// The limiter's view of the state for one call.
+  LimitState limit_state();
   Points3 mid_;        // quad midpoints [m] (3 x nq)
   std::vector<Contact> contacts_;
   std::vector<std::uint8_t> merged_;  // per seam pair
-  std::vector<std::uint8_t> held_;    // per vertex, directional limit: attached, in contact, or following one
-  std::vector<int> adj_start_, adj_;  // vertex -> neighbours over springs and seam pairs (CSR)
-  std::vector<int> adj_edge_;         // beside adj_: its spring (index < springs) or seam pair (springs + index)
-  std::vector<SweptSpring> sweep_;    // the velocity limit's sweep: springs nearest held vertices first
-  std::vector<std::uint8_t> order_held_;                             // the held vertices sweep_ was computed for
-  std::vector<int> order_level_, order_queue_, order_spring_level_;  // its work space (hops from held vertices)
   std::vector<int> attach_tri_;       // per attached vertex
   Points3 attach_bary_;               // (3 x na)
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
-  std::vector<int> changed_in_pass_;  // per vertex: the last limit pass (1-based) that changed its velocity
-  std::vector<int> sweep_position_;   // per spring: its position in sweep_
-  std::vector<std::uint64_t> visit_bits_;  // sweep positions the pass visits (after a pass that changed few points)
-  Eigen::Index marked_ = 0;                // the points the pass under way changed (each once)
-  bool visiting_bits_ = false;             // the pass visits visit_bits_ (else it scans every spring)
-  std::size_t sweep_at_ = 0;               // the position in sweep_ under way (while visiting_bits_)
-  int pass_ = 0;                      // the limit pass under way (0: none)
-  long changes_ = 0;                  // velocity changes in that pass
   Box3 start_box_;
   Collider* collider_ = nullptr;
   Phase phase_ = Phase::kDrape;

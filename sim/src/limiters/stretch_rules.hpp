@@ -1,0 +1,30 @@
+#pragma once
+// The velocity limits' rules for one over-stretched spring (limiter.hpp documents them), inline for the sweep's
+// per-spring step. sim/src only.
+#include <cmath>
+#include <utility>
+
+#include "clothbench/sim/types.hpp"
+
+namespace clothbench::stretch_rules {
+
+// walking Eq. 5 averages, keeping the relative velocity `target`; with unequal masses the mass-weighted mean keeps
+// momentum (the papers' points all have one mass, where both are the same)
+inline std::pair<Real, Real> average(Real va, Real vb, Real wa, Real wb, Real target) {
+  const Real mean = (wa * va + wb * vb) / (wa + wb);
+  return {mean - target * wb / (wa + wb), mean + target * wa / (wa + wb)};
+}
+
+// walking Eq. 6 rules: perpendicular springs average, others: the rear point catches up with the front
+inline std::pair<Real, Real> directional(Real va, Real vb, Real cos_alpha, Real wa, Real wb, Real target, bool literal) {
+  if (std::abs(cos_alpha) < 0.3f) return average(va, vb, wa, wb, target);
+  const std::pair<Real, Real> catch_up =
+      cos_alpha > 0 ? std::pair<Real, Real>{vb - target, vb} : std::pair<Real, Real>{va, va + target};
+  if (literal) return catch_up;
+  // our guard: catching up must not add kinetic energy to the pair (it does not keep momentum, and taken literally
+  // it diverges on a cloth draped over a sphere); where it would, Eq. 5 instead
+  const auto energy = [&](Real a, Real b) { return wa * a * a + wb * b * b; };
+  return energy(catch_up.first, catch_up.second) > energy(va, vb) ? average(va, vb, wa, wb, target) : catch_up;
+}
+
+}  // namespace clothbench::stretch_rules

@@ -1,0 +1,188 @@
+// The strain-limiter family (sim/src/limiters/): every member on three cases at the papers' clock (dt 5 ms, equal
+// masses, springs as soft as that dt allows, so the limiter alone holds the stretch): a square hanging from its
+// top edge, a strip held at both ends with free cloth between (the slow case for a Gauss-Seidel sweep), and a
+// sleeve on a swinging arm.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "clothbench/sim/brute_collider.hpp"
+#include "clothbench/sim/limiter.hpp"
+#include "clothbench/sim/simulator.hpp"
+
+namespace clothbench {
+namespace {
+
+constexpr Real kThreshold = 0.10f;
+
+SolverParams papers_clock(const std::string& limit, int passes) {
+  Material unused;
+  SolverParams p;
+  apply_regime(Regime::kPapers, unused, p);
+  p.limit = limit;
+  p.limit_passes = passes;
+  p.threshold = kThreshold;
+  return p;
+}
+
+Material papers_material() {
+  Material m;
+  SolverParams unused;
+  apply_regime(Regime::kPapers, m, unused);
+  return m;
+}
+
+// the largest structural strain over the last half of `seconds`, sampled every 5 steps; nullopt if diverged
+std::optional<Real> worst_strain(Simulator& sim, Real seconds) {
+  const int steps = static_cast<int>(std::lround(seconds / sim.dt()));
+  Real worst = 0;
+  for (int i = 0; i < steps && sim.step(); ++i)
+    if (2 * i >= steps && i % 5 == 0) worst = std::max(worst, sim.strain().max);
+  if (sim.divergence()) return std::nullopt;
+  return worst;
+}
+
+// binds the attached vertices to a far-away sphere, which never moves: they stay where they are
+void pin(Simulator& sim) { sim.attach(make_sphere_body(Vec3(0, 50, 0), 0.1f, 4, 8)); }
+
+// a 0.6 m square of 21 x 21 points hanging in a vertical plane from its top edge
+std::optional<Real> hanging_square(const std::string& limit, int passes) {
+  const int n = 21;
+  ClothMesh c = make_grid_cloth(n, n, 0.6f / Real(n - 1), Vec3(-0.3f, 1, 0), Vec3::UnitX(), -Vec3::UnitY());
+  for (int i = 0; i < n; ++i) c.attached.push_back(i);
+  Simulator sim(c, papers_material(), papers_clock(limit, passes));
+  pin(sim);
+  return worst_strain(sim, 2);
+}
+
+// a 1 m x 0.2 m strip held at both short ends, sagging between them: the weight of the middle hangs from two
+// fronts 40 springs apart
+std::optional<Real> held_fronts(const std::string& limit, int passes) {
+  const int nx = 41, ny = 9;
+  ClothMesh c = make_grid_cloth(nx, ny, 1.0f / Real(nx - 1), Vec3(-0.5f, 1, -0.1f), Vec3::UnitX(), Vec3::UnitZ());
+  for (int j = 0; j < ny; ++j) c.attached.push_back(j * nx), c.attached.push_back(j * nx + nx - 1);
+  Simulator sim(c, papers_material(), papers_clock(limit, passes));
+  pin(sim);
+  return worst_strain(sim, 2);
+}
+
+// a capsule arm (r 4 cm, 30 cm) hanging from a shoulder pivot and swinging +-30 degrees once a second, in an open
+// sleeve (300 degrees round it, 6 cm from its axis) whose top row is attached to it; the worst frame's strain
+// over the second swing, 30 frames a second
+std::optional<Real> swinging_sleeve(const std::string& limit, int passes) {
+  const Vec3 pivot(0, 1.4f, 0);
+  const BodyFrame rest = make_capsule_body(pivot - Vec3(0, 0.19f, 0), 0.04f, 0.30f, 8, 24);
+  const int nu = 26, nv = 13;  // round the arm, down it
+  ClothMesh c = make_grid_cloth(nu, nv, 0.02f, Vec3::Zero(), Vec3::UnitX(), -Vec3::UnitY());
+  const Real turn = Real(300.0 / 360.0 * 2 * M_PI), radius = 0.06f;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const Real a = turn * Real(i) / Real(nu - 1);
+      c.positions.col(j * nu + i) = pivot + Vec3(radius * std::sin(a), -0.06f - 0.02f * Real(j), radius * std::cos(a));
+    }
+  for (int i = 0; i < nu; ++i) c.attached.push_back(i);
+  // the rest lengths are the flat grid's; wrapped at 6 cm the rows' springs are chords of 2 cm arcs (0.2 % short)
+  SolverParams p = papers_clock(limit, passes);
+  Simulator sim(c, papers_material(), p);
+  BruteForceCollider arm;
+  BodyFrame body = rest;
+  const auto pose = [&](double t) {
+    const Real angle = Real(0.5 * std::sin(2 * M_PI * t)), omega = Real(0.5 * 2 * M_PI * std::cos(2 * M_PI * t));
+    const Eigen::AngleAxis<Real> r(angle, Vec3::UnitZ());
+    for (int v = 0; v < rest.vertex_count(); ++v) {
+      const Vec3 arm_vector = r * (rest.positions.col(v) - pivot);
+      body.positions.col(v) = pivot + arm_vector;
+      body.velocities.col(v) = Vec3(0, 0, omega).cross(arm_vector);
+    }
+    body.normals = angle_weighted_normals(body.positions, body.triangles);
+    body.moving = true;
+    body.time_s = t;
+  };
+  pose(0);
+  arm.set_body(body);
+  sim.set_collider(&arm);
+  sim.attach(body);
+  const double frame = 1.0 / 30;
+  const int per_frame = static_cast<int>(std::ceil(frame / double(sim.dt()) - 1e-9));
+  Real worst = 0;
+  for (int f = 1; f <= 60 && !sim.divergence(); ++f) {
+    pose(f * frame);
+    arm.update_body(body);
+    sim.follow_attachments(body);
+    for (int i = 0; i < per_frame && sim.step(); ++i) {
+    }
+    if (f > 30) worst = std::max(worst, sim.strain().max);
+  }
+  if (sim.divergence()) return std::nullopt;
+  return worst;
+}
+
+std::string show(const std::optional<Real>& s) { return s ? std::to_string(*s) : std::string("diverged"); }
+
+TEST(Limiters, RegistryNamesEveryMemberOnceAndRejectsOthers) {
+  const auto names = limiter_names();
+  for (const char* name : {"none", "stiff", "position", "velocity-zero", "velocity", "directional",
+                           "directional-literal", "tethers", "follow"})
+    EXPECT_EQ(std::count(names.begin(), names.end(), name), 1) << name;
+  EXPECT_EQ(names.size(), limiter_registry().size());
+  try {
+    check_limiter("rubber");
+    FAIL() << "an unknown limiter was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("tethers"), std::string::npos) << e.what();  // names the accepted ones
+  }
+  for (const LimiterInfo& l : limiter_registry()) EXPECT_TRUE(make_limiter(l.name, {}) != nullptr) << l.name;
+}
+
+TEST(Limiters, HangingSquare) {
+  const auto none = hanging_square("none", 1);
+  std::printf("[ hanging ] none %s\n", show(none).c_str());
+  ASSERT_TRUE(none.has_value());
+  EXPECT_GT(*none, 0.3f);  // the papers' soft springs alone stretch far past the threshold
+  for (const char* limit : {"velocity", "directional", "tethers", "follow"})
+    for (int passes : {1, 32}) {
+      const auto s = hanging_square(limit, passes);
+      std::printf("[ hanging ] %s, %d passes: %s\n", limit, passes, show(s).c_str());
+      ASSERT_TRUE(s.has_value()) << limit;
+      // a sweep from the held edge with more passes, or a method that carries the weight to the support in one
+      // pass (directional's held rear point, the tethers, follow the leader), holds it within threshold + 1 %
+      if (passes > 1 || std::string(limit) != "velocity") {
+        EXPECT_LE(*s, kThreshold + 0.01f) << limit << " " << passes;
+      }
+    }
+  // one pass of Eq. 5 hands half of each correction back: the weight is not carried to the edge
+  EXPECT_GT(*hanging_square("velocity", 1), kThreshold + 0.01f);
+}
+
+TEST(Limiters, TwoHeldFrontsWithFreeClothBetween) {
+  for (const char* limit : {"velocity", "directional", "tethers", "follow"})
+    for (int passes : {1, 32}) {
+      const auto s = held_fronts(limit, passes);
+      std::printf("[ fronts  ] %s, %d passes: %s\n", limit, passes, show(s).c_str());
+      ASSERT_TRUE(s.has_value()) << limit;
+      // one pass leaves the strip stretched past the limit; 32 of the sweep with Eq. 5 hold it
+      if (passes == 1) {
+        EXPECT_GT(*s, kThreshold + 0.01f) << limit;
+      } else if (std::string(limit) != "follow") {
+        EXPECT_LE(*s, kThreshold + 0.01f) << limit;
+      }
+    }
+}
+
+TEST(Limiters, SleeveOnASwingingArm) {
+  for (const char* limit : {"velocity", "directional", "tethers", "follow"})
+    for (int passes : {1, 32}) {
+      const auto s = swinging_sleeve(limit, passes);
+      std::printf("[ sleeve  ] %s, %d passes: %s\n", limit, passes, show(s).c_str());
+      ASSERT_TRUE(s.has_value()) << limit;
+      if (passes == 32 && std::string(limit) != "follow") {
+        EXPECT_LE(*s, kThreshold + 0.01f) << limit;
+      }
+    }
+}
+
+}  // namespace
+}  // namespace clothbench
