@@ -283,7 +283,8 @@ nlohmann::json repetition_rows(const std::vector<nlohmann::json>& runs) {
   std::vector<std::size_t> order(real.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return real[a] < real[b]; });
-  const nlohmann::json& first = out[order[order.size() / 2]];
+  // a copy: the aggregates pushed below may move `out`'s rows
+  const nlohmann::json first = out[order[order.size() / 2]];
   const std::string unit = first["time_unit"];  // one unit for the benchmark, the median run's
   for (std::size_t i = 0; i < out.size(); ++i) set_times(out[i], real[i], cpu[i], unit);
   const std::size_t n = runs.size();

@@ -68,6 +68,26 @@ TEST(Report, RepetitionRowsFollowGoogleBenchmarksLayout) {
   EXPECT_EQ(one[0], runs[0]);
 }
 
+TEST(Report, RepetitionRowsForAnyNumberOfRuns) {
+  // the aggregates once copied their fields from a reference into the array they were appended to, which the
+  // appending moved: a crash (or garbage) for most counts (run --repetitions 2 failed every time)
+  for (std::size_t n = 1; n <= 12; ++n) {
+    std::vector<json> runs;
+    for (std::size_t i = 0; i < n; ++i) {
+      json row{{"name", "case"}, {"run_type", "iteration"}, {"iterations", 10}, {"vertices", 100}};
+      set_times(row, 1.0 + double((i * 7) % n), 0.5);
+      runs.push_back(row);
+    }
+    const json out = repetition_rows(runs);
+    ASSERT_EQ(out.size(), n == 1 ? 1u : n + 4u) << n;
+    for (std::size_t k = n; k < out.size(); ++k) {
+      EXPECT_EQ(out[k]["run_type"], "aggregate") << n;
+      EXPECT_EQ(out[k]["vertices"], 100) << n;
+      EXPECT_EQ(out[k]["name"].get<std::string>().rfind("case_", 0), 0u) << n;
+    }
+  }
+}
+
 TEST(Report, LimitMissesNameEachLimitMissed) {
   RunResult r;
   EXPECT_TRUE(limit_misses(r).empty());
