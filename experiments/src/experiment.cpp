@@ -201,6 +201,7 @@ const std::vector<Experiment>& experiments() {
     add_walking_f8_experiments(e);
     add_durupinar_f6_experiments(e);
     add_integrators_experiments(e);
+    add_limiters_experiments(e);
     add_stability_experiments(e);
     add_colliders_experiments(e);
     add_pareto_minimal_experiments(e);
