@@ -1,11 +1,11 @@
 // `tethers`: long-range attachments (Kim, Chentanez, Mueller 2012) ahead of walking Eq. 5's sweep. If no spring is
 // longer than (1 + threshold) l0, no point is farther from another than (1 + threshold) times the shortest path
 // between them over the springs' rest lengths (the triangle inequality along the path): each free point is kept
-// within that distance of its nearest held point (attached or in contact), which stays where it is, in one pass
-// that carries the cloth's weight to its supports however far they are; the sweep then mends the springs locally.
+// within that distance of its nearest held point (attached or in contact) on each of two fronts (groups of held
+// points joined by springs), which stays where it is, in one pass that carries the cloth's weight to its supports
+// however far they are; the sweep then mends the springs locally.
 // The paths (multi-source Dijkstra over the structural and shear springs and the sewn seam pairs, at zero length)
 // are found again when the set of held points changes.
-#include <array>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -23,18 +23,10 @@ class Tethers final : public VelocitySweep<Tethers> {
   using VelocitySweep::VelocitySweep;
 
   void limit_velocities(LimitState& s, bool contacts_hold) override {
-    s_ = &s;
-    const auto nv = static_cast<std::size_t>(s.x.cols());
-    anchors_held_.resize(nv);
-    bool same = tether_.size() == 2 * nv;
-    for (std::size_t i = 0; i < nv; ++i) {
-      const std::uint8_t held = s.inv_m[static_cast<Eigen::Index>(i)] == 0 || in_contact(static_cast<int>(i));
-      same = same && anchors_held_[i] == held;
-      anchors_held_[i] = held;
-    }
-    if (!same) find_anchors();
+    begin(s);
+    if (held_ != anchors_held_) anchors_held_ = held_, find_anchors();
     pull_to_anchors();
-    sweep(s, contacts_hold);
+    passes(contacts_hold);
   }
 
   std::pair<Real, Real> split(int a, int b, const Vec3&, Real va, Real vb, Real target) const {
@@ -48,15 +40,16 @@ class Tethers final : public VelocitySweep<Tethers> {
   void find_anchors() {
     const ClothMesh& mesh = s_->mesh;
     const std::size_t nv = anchors_held_.size();
-    if (neighbours_.empty()) build_graph();
     const auto ns = static_cast<std::size_t>(mesh.springs.cols());
     group_.assign(nv, -1);
     for (std::size_t g = 0; g < s_->merged.size(); ++g)
       for (int i : s_->merged[g]) group_[static_cast<std::size_t>(i)] = static_cast<int>(g);
-    // a seam pair joins its points once sewn (one merged group), at zero length
+    // the paths run over the structural and shear springs, and over a seam pair once sewn (one merged group), at
+    // zero length
     const auto usable = [&](int i, int j, std::size_t e) {
-      return e < ns || (group_[static_cast<std::size_t>(i)] >= 0 &&
-                        group_[static_cast<std::size_t>(i)] == group_[static_cast<std::size_t>(j)]);
+      if (e < ns) return mesh.kind[e] != SpringKind::kFlexion;
+      return group_[static_cast<std::size_t>(i)] >= 0 &&
+             group_[static_cast<std::size_t>(i)] == group_[static_cast<std::size_t>(j)];
     };
     const auto length = [&](std::size_t e) { return e < ns ? mesh.rest_length[static_cast<Eigen::Index>(e)] : Real(0); };
     label_fronts(usable);
@@ -76,10 +69,9 @@ class Tethers final : public VelocitySweep<Tethers> {
       const int front = front_[static_cast<std::size_t>(it.anchor)];
       if (t[0].anchor >= 0 && (t[1].anchor >= 0 || front_[static_cast<std::size_t>(t[0].anchor)] == front)) continue;
       (t[0].anchor < 0 ? t[0] : t[1]) = {it.anchor, it.path};
-      for (int k = start_[static_cast<std::size_t>(it.vertex)]; k < start_[static_cast<std::size_t>(it.vertex) + 1]; ++k) {
-        const auto [j, e] = neighbours_[static_cast<std::size_t>(k)];
+      for_each_neighbour(it.vertex, [&](int j, std::size_t e) {
         if (usable(it.vertex, j, e)) queue.push({it.path + length(e), j, it.anchor});
-      }
+      });
     }
   }
 
@@ -97,36 +89,13 @@ class Tethers final : public VelocitySweep<Tethers> {
       while (!stack.empty()) {
         const int i = stack.back();
         stack.pop_back();
-        for (int k = start_[static_cast<std::size_t>(i)]; k < start_[static_cast<std::size_t>(i) + 1]; ++k) {
-          const auto [j, e] = neighbours_[static_cast<std::size_t>(k)];
-          if (!anchors_held_[static_cast<std::size_t>(j)] || front_[static_cast<std::size_t>(j)] >= 0 || !usable(i, j, e)) continue;
+        for_each_neighbour(i, [&](int j, std::size_t e) {
+          if (!anchors_held_[static_cast<std::size_t>(j)] || front_[static_cast<std::size_t>(j)] >= 0 || !usable(i, j, e)) return;
           front_[static_cast<std::size_t>(j)] = fronts;
           stack.push_back(j);
-        }
+        });
       }
       ++fronts;
-    }
-  }
-
-  // the structural and shear springs and the seam pairs, both ways, as compressed rows (vertex, edge)
-  void build_graph() {
-    const ClothMesh& mesh = s_->mesh;
-    const auto nv = static_cast<std::size_t>(mesh.positions.cols()), ns = static_cast<std::size_t>(mesh.springs.cols());
-    std::vector<std::array<int, 3>> edges;  // a, b, edge (spring, or springs + seam pair)
-    for (std::size_t k = 0; k < ns; ++k)
-      if (mesh.kind[k] != SpringKind::kFlexion)
-        edges.push_back({mesh.springs(0, static_cast<Eigen::Index>(k)), mesh.springs(1, static_cast<Eigen::Index>(k)),
-                         static_cast<int>(k)});
-    for (Eigen::Index p = 0; p < mesh.seam_pairs.cols(); ++p)
-      edges.push_back({mesh.seam_pairs(0, p), mesh.seam_pairs(1, p), static_cast<int>(ns + static_cast<std::size_t>(p))});
-    start_.assign(nv + 1, 0);
-    for (const auto& e : edges) ++start_[static_cast<std::size_t>(e[0]) + 1], ++start_[static_cast<std::size_t>(e[1]) + 1];
-    for (std::size_t i = 1; i <= nv; ++i) start_[i] += start_[i - 1];
-    neighbours_.resize(static_cast<std::size_t>(start_.back()));
-    std::vector<int> fill(start_.begin(), start_.end() - 1);
-    for (const auto& e : edges) {
-      neighbours_[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[0])]++)] = {e[1], static_cast<std::size_t>(e[2])};
-      neighbours_[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[1])]++)] = {e[0], static_cast<std::size_t>(e[2])};
     }
   }
 
@@ -155,8 +124,6 @@ class Tethers final : public VelocitySweep<Tethers> {
   std::vector<std::uint8_t> anchors_held_;  // per vertex: held when the anchors were found
   std::vector<Tether> tether_;              // per vertex, two: its nearest anchors on two fronts
   std::vector<int> front_;                  // per held vertex: its front (work space)
-  std::vector<int> start_;                  // the graph's rows
-  std::vector<std::pair<int, std::size_t>> neighbours_;
   std::vector<int> group_;                  // per vertex: its merged group (-1: none; work space)
 };
 

@@ -31,7 +31,17 @@ class VelocitySweep : public Limiter {
     Real max_len;  // (1 + threshold) l0
   };
 
-  void sweep(LimitState& state, bool contacts_hold);
+  void sweep(LimitState& state, bool contacts_hold) { begin(state), passes(contacts_hold); }
+  // the call's arrays, the adjacency (once) and the held points: attached ones and those the body holds (in contact)
+  void begin(LimitState& state);
+  // the passes over the springs, swept from the held points
+  void passes(bool contacts_hold);
+  // f(j, e) for every neighbour j of vertex i over a spring (e < springs) or a seam pair (e = springs + pair)
+  template <class F>
+  void for_each_neighbour(int i, F&& f) const {
+    for (int k = adj_start_[static_cast<std::size_t>(i)]; k < adj_start_[static_cast<std::size_t>(i) + 1]; ++k)
+      f(adj_[static_cast<std::size_t>(k)], static_cast<std::size_t>(adj_edge_[static_cast<std::size_t>(k)]));
+  }
   // the relative velocity along the spring that the rule keeps (the one that ends the step at `allowed`)
   Real target(Real rate) const { return rate; }
   bool in_contact(int i) const { return !s_->contacts.empty() && s_->contacts[static_cast<std::size_t>(i)].hit; }
@@ -76,16 +86,21 @@ class VelocitySweep : public Limiter {
 };
 
 template <class Derived>
-void VelocitySweep<Derived>::sweep(LimitState& state, bool contacts_hold) {
+void VelocitySweep<Derived>::begin(LimitState& state) {
   s_ = &state;
   x_ = state.x.data(), v_ = state.v.data(), m_ = state.m.data(), inv_m_ = state.inv_m.data(), dt_ = state.dt;
   const Eigen::Index nv = state.x.cols();
   if (adj_start_.empty()) build_adjacency();
-  // held points: attached ones and those the body holds (in contact)
   held_.resize(static_cast<std::size_t>(nv));
   const Contact* contacts = state.contacts.empty() ? nullptr : state.contacts.data();
   std::uint8_t* held = held_.data();
   for (Eigen::Index i = 0; i < nv; ++i) held[i] = inv_m_[i] == 0 || (contacts && contacts[i].hit);
+}
+
+template <class Derived>
+void VelocitySweep<Derived>::passes(bool contacts_hold) {
+  LimitState& state = *s_;
+  const Eigen::Index nv = state.x.cols();
   order_springs_from_held();
   // a pass visits only the springs with an end whose velocity changed in the last pass or in this one (the
   // others would find what they found before), and the passes stop once one changes nothing. After a pass that
