@@ -23,7 +23,7 @@ struct Case {
 
 // every limiter but none and stiff (whose figures are those of the cloth's own springs)
 const char* const kLimits[] = {"velocity-zero", "velocity", "directional", "directional-literal", "position",
-                               "tethers", "follow"};
+                               "tethers", "follow", "projection"};
 
 struct Setting {
   const char* regime;
@@ -155,7 +155,7 @@ void limiters(ExperimentContext& ctx) {
   std::vector<Setting> papers_all, papers_main, stable;
   for (const char* limit : kLimits)
     for (int passes : {1, 4, 32}) papers_all.push_back({"papers", limit, passes});
-  for (const char* limit : {"velocity", "directional", "tethers", "follow"})
+  for (const char* limit : {"velocity", "directional", "tethers", "follow", "projection"})
     for (int passes : {4, 32}) papers_main.push_back({"papers", limit, passes});
   // (tethers in the stable regime: found again at nearly every one of its short steps, they cost more than the
   // step; the papers' clock measures them)
@@ -165,7 +165,8 @@ void limiters(ExperimentContext& ctx) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
   };
-  const std::vector<Setting> second_clip{{"papers", "velocity", 32}, {"papers", "tethers", 32}, {"stable", "directional", 8}};
+  const std::vector<Setting> second_clip{{"papers", "velocity", 32}, {"papers", "tethers", 32}, {"papers", "projection", 32},
+                                         {"stable", "directional", 8}};
   const std::vector<std::pair<Case, std::vector<Setting>>> cases = {
       {{"shirt", "dressing/shirt.toml", 1800, ""}, join(papers_all, stable)},
       {{"dress", "dressing/dress.toml", 2300, ""}, join(papers_main, stable)},
@@ -208,9 +209,10 @@ void limiters(ExperimentContext& ctx) {
                          {"series", series}});
   ctx.write(
       "limiters", "Strain limiters against each other",
-      "Every strain limiter of `solver.limit` (scenes/README.md; dressing section 4, walking section 3, and two "
-      "methods beyond the papers: `tethers`, long-range attachments after Kim, Chentanez and Mueller 2012, and "
-      "`follow`, follow the leader after Mueller, Kim and Chentanez 2012) at a few pass counts "
+      "Every strain limiter of `solver.limit` (scenes/README.md; dressing section 4, walking section 3, and three "
+      "methods beyond the papers: `tethers`, long-range attachments after Kim, Chentanez and Mueller 2012, "
+      "`follow`, follow the leader after Mueller, Kim and Chentanez 2012, and `projection`, fast projection of the "
+      "structural springs after Goldenthal et al. 2007, its passes Newton iterations) at a few pass counts "
       "(`solver.limit_passes`, the most per call), with " +
           collider +
           ": the shirt and the dress sewn and draped on the static body, and the skirt and the dress with sleeves "

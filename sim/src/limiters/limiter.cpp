@@ -24,7 +24,9 @@ const std::vector<LimiterInfo>& limiter_registry() {
       {"tethers", "Kim, Chentanez, Mueller 2012: long-range attachments, then walking Eq. 5", false,
        make_tether_limit},
       {"follow", "Mueller, Kim, Chentanez 2012: follow the leader, swept from the held points", false,
-       make_follow_limit}};
+       make_follow_limit},
+      {"projection", "Goldenthal et al. 2007: fast projection of the over-stretched structural springs", false,
+       make_projection_limit}};
   return r;
 }
 

@@ -15,5 +15,6 @@ std::unique_ptr<Limiter> make_directional_limit(const LimiterParams& params);
 std::unique_ptr<Limiter> make_directional_literal_limit(const LimiterParams& params);
 std::unique_ptr<Limiter> make_tether_limit(const LimiterParams& params);
 std::unique_ptr<Limiter> make_follow_limit(const LimiterParams& params);
+std::unique_ptr<Limiter> make_projection_limit(const LimiterParams& params);
 
 }  // namespace clothbench
