@@ -1,7 +1,8 @@
 #pragma once
 /// The CLI of DESIGN.md: one file per subcommand (cmd_<name>.cpp), each adding itself to the app.
 /// A command's action runs after parsing and returns the exit code (0 ok, 1 regression, 2 bad input,
-/// 3 diverged, 4 accuracy limits missed under `run --strict`, 5 sweep points failed or missing).
+/// 3 diverged, 4 accuracy limits missed under `run --strict`, 5 sweep points failed or missing, 6 an internal error:
+/// the machine's or the program's, not the input's).
 #include <functional>
 
 #include <CLI/CLI.hpp>

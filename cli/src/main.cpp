@@ -1,9 +1,11 @@
 // clothbench: the command line of DESIGN.md
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 
 #include "clothbench/bench/report.hpp"
 #include "clothbench/config.h"
+#include "clothbench/io/errors.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
@@ -29,10 +31,18 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  // bad input (a file, a scene value, an option) exits 2; anything else is this program's failure or the
+  // machine's (no OpenGL context, a failed library call, a bug), never blamed on the input
   try {
     return action ? action() : 0;
-  } catch (const std::exception& e) {
+  } catch (const clothbench::InputError& e) {
     std::cerr << "clothbench: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "clothbench: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "clothbench: internal error: " << e.what() << "\n";
+    return 6;
   }
 }
