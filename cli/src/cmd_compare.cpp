@@ -3,7 +3,10 @@
 // (timing_stats.hpp). A regression needs at least kMinRepetitions repetitions on both sides (rows with
 // fewer get no verdict, said so), p < 0.05 and a ratio beyond the threshold. Times are read in each row's
 // time_unit. Rows whose config_hash differs ran different settings: shown, flagged and not judged; rows
-// on one side only are listed. Exit 1 on a regression, 2 when no row could be judged.
+// on one side only are listed. Accuracy is judged with any number of repetitions (the simulation is
+// deterministic): a row that stops meeting the accuracy limits, diverges, or whose accuracy figure worsens by more
+// than --accuracy-tolerance of that figure's limit is an accuracy regression. Exit 1 on a regression of either
+// kind, 2 when no row's time could be judged.
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -19,7 +22,42 @@ namespace clothbench::cli {
 
 namespace {
 
+// what a row says about accuracy (its first iteration row's: every repetition simulates the same)
+struct Accuracy {
+  bool present = false;
+  bool meets = true, diverged = false;
+  std::string misses;                 // limit_misses, joined
+  std::map<std::string, double> figures;  // the figures below that the row has
+};
+
+// the accuracy figures compare judges and their limits (the accuracy limits of README.md; strain, a fraction, at the
+// default threshold's: 0.10 + 0.01)
+struct Figure {
+  const char* key;
+  double limit;
+};
+const Figure kFigures[] = {{"inside_pct", 0.5},          {"worst_frame_inside_pct", 0.5},
+                           {"depth_max_mm", 5},          {"worst_frame_depth_max_mm", 5},
+                           {"crossings_pct", 1},         {"worst_frame_crossings_pct", 1},
+                           {"seam_gap_max_mm", 2},       {"strain_max", 0.11},
+                           {"worst_frame_strain_max", 0.11}};
+
+Accuracy read_accuracy(const nlohmann::json& row) {
+  Accuracy a;
+  a.present = true;
+  const auto flag = [&](const char* key) { return row.contains(key) && row[key].is_number() && row[key].get<double>() != 0; };
+  a.diverged = flag("diverged");
+  a.meets = !row.contains("meets_limits") || flag("meets_limits");
+  if (row.contains("limit_misses") && row["limit_misses"].is_array())
+    for (const auto& m : row["limit_misses"])
+      if (m.is_string()) a.misses += (a.misses.empty() ? "" : ", ") + m.get<std::string>();
+  for (const Figure& f : kFigures)
+    if (row.contains(f.key) && row[f.key].is_number()) a.figures[f.key] = row[f.key].get<double>();
+  return a;
+}
+
 struct Benchmark {
+  Accuracy accuracy;               // the first iteration row's
   std::vector<double> ns;          // real_time of every iteration row (one per repetition) [ns]
   std::set<std::string> hashes;    // config_hash where the rows have one
   std::string unit = "ms";         // the rows' time_unit, for printing
@@ -51,6 +89,7 @@ Benchmarks read_benchmarks(const std::string& path) {
     b.unit = row.value("time_unit", std::string("ms"));
     b.ns.push_back(row["real_time"].get<double>() * ns_per(b.unit, path));
     if (row.contains("config_hash") && row["config_hash"].is_string()) b.hashes.insert(row["config_hash"].get<std::string>());
+    if (!b.accuracy.present) b.accuracy = read_accuracy(row);
   }
   return s;
 }
@@ -72,9 +111,41 @@ void print_row(const std::string& name, const std::string& old_t, const std::str
 
 struct Tally {
   int regressions = 0, judged = 0, unjudged = 0, changed = 0, one_side = 0;
+  int accuracy_regressions = 0, accuracy_judged = 0;
+  std::vector<std::string> accuracy_lines;  // printed after the table
 };
 
-void compare_one(const std::string& name, const Benchmark& o, const Benchmark& n, double threshold, Tally& tally) {
+// how the new row's accuracy is worse than the old one's beyond the tolerance (a fraction of each figure's limit);
+// empty when it is not
+std::vector<std::string> accuracy_worse(const Accuracy& o, const Accuracy& n, double tolerance) {
+  std::vector<std::string> worse;
+  if (n.diverged && !o.diverged) return {"diverged"};
+  if (o.meets && !n.meets) worse.push_back("stopped meeting the accuracy limits" + (n.misses.empty() ? "" : " (" + n.misses + ")"));
+  for (const Figure& f : kFigures) {
+    const auto a = o.figures.find(f.key), b = n.figures.find(f.key);
+    if (a == o.figures.end() || b == n.figures.end()) continue;
+    const double allowed = tolerance * f.limit;
+    if (b->second - a->second > allowed)
+      worse.push_back(std::string(f.key) + " " + fixed(a->second, 4) + " -> " + fixed(b->second, 4) + " (tolerance +" +
+                      fixed(allowed, 4) + ")");
+  }
+  return worse;
+}
+
+void judge_accuracy(const std::string& name, const Benchmark& o, const Benchmark& n, double tolerance, Tally& tally) {
+  if (!o.accuracy.present || !n.accuracy.present) return;
+  ++tally.accuracy_judged;
+  const auto worse = accuracy_worse(o.accuracy, n.accuracy, tolerance);
+  if (worse.empty()) return;
+  ++tally.accuracy_regressions;
+  std::string line = "ACCURACY REGRESSION " + name + ":";
+  for (const std::string& w : worse) line += " " + w + ";";
+  line.pop_back();
+  tally.accuracy_lines.push_back(line);
+}
+
+void compare_one(const std::string& name, const Benchmark& o, const Benchmark& n, double threshold,
+                 double accuracy_tolerance, Tally& tally) {
   const std::string before = time_in(median(o.ns), o.unit), after = time_in(median(n.ns), o.unit);
   const TimingComparison c = compare_timings(o.ns, n.ns, threshold);
   const std::string ratio = fixed(c.ratio, 3) + " [" + fixed(c.ratio_lo, 3) + ", " + fixed(c.ratio_hi, 3) + "]";
@@ -83,6 +154,7 @@ void compare_one(const std::string& name, const Benchmark& o, const Benchmark& n
     print_row(name, before, after, ratio, "-", "CONFIG DIFFERS (not judged)");
     return;
   }
+  judge_accuracy(name, o, n, accuracy_tolerance, tally);
   if (!c.judged) {
     ++tally.unjudged;
     print_row(name, before, after, ratio, "-",
@@ -95,7 +167,7 @@ void compare_one(const std::string& name, const Benchmark& o, const Benchmark& n
   print_row(name, before, after, ratio, fixed(c.p_slower, 4), c.regression ? "REGRESSION" : "ok");
 }
 
-int compare(const std::string& old_path, const std::string& new_path, double threshold_pct) {
+int compare(const std::string& old_path, const std::string& new_path, double threshold_pct, double accuracy_pct) {
   const Benchmarks before = read_benchmarks(old_path), after = read_benchmarks(new_path);
   Tally tally;
   print_row("name", "old (median)", "new (median)", "new/old [95 % CI]", "p", "verdict");
@@ -105,7 +177,7 @@ int compare(const std::string& old_path, const std::string& new_path, double thr
       ++tally.one_side;
       print_row(name, time_in(median(o.ns), o.unit), "-", "-", "-", "only in old");
     } else {
-      compare_one(name, o, it->second, threshold_pct / 100, tally);
+      compare_one(name, o, it->second, threshold_pct / 100, accuracy_pct / 100, tally);
     }
   }
   for (const auto& [name, n] : after)
@@ -113,12 +185,16 @@ int compare(const std::string& old_path, const std::string& new_path, double thr
   std::printf("%d regression(s) among %d judged row(s): slower by more than %.1f %% with p < 0.05 (one-sided "
               "Mann-Whitney U); %d row(s) without a verdict, %d with another configuration, %d on one side only\n",
               tally.regressions, tally.judged, threshold_pct, tally.unjudged, tally.changed, tally.one_side);
+  for (const std::string& line : tally.accuracy_lines) std::printf("%s\n", line.c_str());
+  std::printf("%d accuracy regression(s) among %d row(s) compared: stopped meeting the limits, diverged, or an accuracy "
+              "figure worse by more than %.1f %% of its limit\n",
+              tally.accuracy_regressions, tally.accuracy_judged, accuracy_pct);
   if (tally.changed)
     std::fprintf(stderr,
                  "clothbench compare: warning: %d row(s) ran with a different configuration (config_hash differs: "
                  "other scene settings or --set overrides); their times are not comparable and were not judged\n",
                  tally.changed);
-  if (tally.regressions) return 1;
+  if (tally.regressions || tally.accuracy_regressions) return 1;
   if (tally.judged == 0) {
     std::fprintf(stderr, "clothbench compare: no row could be judged: run both sides with --repetitions %d or more\n",
                  kMinRepetitions);
@@ -132,13 +208,19 @@ int compare(const std::string& old_path, const std::string& new_path, double thr
 void add_compare_command(CLI::App& app, Action& action) {
   auto paths = std::make_shared<std::vector<std::string>>();
   auto threshold = std::make_shared<double>(10.0);
+  auto accuracy = std::make_shared<double>(10.0);
   auto* cmd = app.add_subcommand(
       "compare", "Compare two result JSON files (>= " + std::to_string(kMinRepetitions) +
-                     " repetitions per row for a verdict); exit 1 on a regression, 2 when nothing could be judged");
+                     " repetitions per row for a time verdict; accuracy is judged at any count); exit 1 on a regression "
+                     "of time or accuracy, 2 when no row's time could be judged");
   cmd->add_option("files", *paths, "OLD.json NEW.json")->required()->expected(2);
   cmd->add_option("--threshold", *threshold, "slow-down that counts as a regression [%]")->check(CLI::Range(0.0, 1e6));
-  cmd->callback([&action, paths, threshold] {
-    action = [paths, threshold] { return compare((*paths)[0], (*paths)[1], *threshold); };
+  cmd->add_option("--accuracy-tolerance", *accuracy,
+                  "an accuracy figure (inside, depth, crossings, seam gap, strain; worst frame too) worse by more "
+                  "than this share of its limit is an accuracy regression [%]")
+      ->check(CLI::Range(0.0, 1e6));
+  cmd->callback([&action, paths, threshold, accuracy] {
+    action = [paths, threshold, accuracy] { return compare((*paths)[0], (*paths)[1], *threshold, *accuracy); };
   });
 }
 

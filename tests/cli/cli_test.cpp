@@ -179,6 +179,36 @@ TEST_F(Cli, CompareFlagsARegressionOnlyWithEnoughRepetitions) {
   EXPECT_NE(read(log).find("no verdict: 5 vs 1 repetitions (need >= 5 on both sides)"), std::string::npos) << read(log);
 }
 
+// accuracy is judged at any number of repetitions: a row that stops meeting the limits, or whose figure worsens by
+// more than the tolerance (a share of that figure's limit), is an accuracy regression even when its time is the same
+TEST_F(Cli, CompareFlagsAnAccuracyRegression) {
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  const auto write = [&](const std::string& path, double crossings_pct, bool meets, int reps) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (int i = 0; i < reps; ++i)
+      rows.push_back({{"name", "a/b"}, {"run_type", "iteration"}, {"real_time", 1.0 + 0.01 * (i - reps / 2)},
+                      {"time_unit", "ms"}, {"crossings_pct", crossings_pct}, {"meets_limits", meets ? 1 : 0},
+                      {"limit_misses", meets ? nlohmann::json::array() : nlohmann::json::array({"crossings 9 % > 1 %"})}});
+    std::ofstream(path) << nlohmann::json{{"context", {}}, {"benchmarks", rows}}.dump();
+  };
+  write(file("old.json"), 0.41, true, 5);
+  write(file("close.json"), 0.45, true, 5);   // worse by 0.04: within 10 % of the 1 % limit
+  write(file("worse.json"), 0.80, true, 5);   // worse by 0.39: beyond it, still meeting the limits
+  write(file("fails.json"), 9.0, false, 5);
+  write(file("fails_once.json"), 9.0, false, 1);
+  const std::string old = file("old.json"), log = file("log");
+  EXPECT_EQ(clothbench("compare " + old + " " + file("close.json"), log), 0) << read(log);
+  EXPECT_NE(read(log).find("0 accuracy regression(s) among 1 row(s)"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("worse.json"), log), 1) << read(log);
+  EXPECT_NE(read(log).find("ACCURACY REGRESSION a/b: crossings_pct 0.4100 -> 0.8000"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("worse.json") + " --accuracy-tolerance 50", log), 0) << read(log);
+  EXPECT_EQ(clothbench("compare " + old + " " + file("fails.json"), log), 1) << read(log);
+  EXPECT_NE(read(log).find("stopped meeting the accuracy limits (crossings 9 % > 1 %)"), std::string::npos) << read(log);
+  // one repetition: no time verdict, but the accuracy regression is still found
+  EXPECT_EQ(clothbench("compare " + old + " " + file("fails_once.json"), log), 1) << read(log);
+  EXPECT_NE(read(log).find("ACCURACY REGRESSION"), std::string::npos) << read(log);
+}
+
 TEST_F(Cli, CompareListsRowsOnOneSideOnlyAndReadsEachRowsTimeUnit) {
   const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
   write_runs(file("old.json"), "a/b", 1.0, 5);
