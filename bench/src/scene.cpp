@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
+#include <vector>
 
 #include "clothbench/config.h"
 #include "clothbench/io/data_root.hpp"
@@ -450,12 +452,47 @@ std::string config_text(const Scene& scene) {
          stop_config(scene.stop);
 }
 
+namespace {
+
+// FNV-1a 64
+struct Fnv1a {
+  std::uint64_t h = 14695981039346656037ull;  // the offset basis
+  void add(const char* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ static_cast<unsigned char>(data[i])) * 1099511628211ull;
+  }
+  std::string hex() const {
+    char out[17];
+    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+    return out;
+  }
+};
+
+// the digest of the bytes of a file the run reads ("" when the reference does not resolve: the run then fails)
+std::string file_digest(const Scene& scene, const std::string& ref) {
+  std::string path;
+  try {
+    path = resolve_scene_path(scene, ref);
+  } catch (const InputError&) {
+    return {};
+  }
+  std::ifstream in(path, std::ios::binary);
+  Fnv1a f;
+  std::vector<char> buffer(1 << 16);
+  while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0)
+    f.add(buffer.data(), static_cast<std::size_t>(in.gcount()));
+  return f.hex();
+}
+
+}  // namespace
+
 std::string config_hash(const Scene& scene) {
-  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64-bit offset basis
-  for (const unsigned char c : config_text(scene)) h = (h ^ c) * 1099511628211ull;
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-  return hex;
+  // the settings and the bytes of every file they name: an edited pattern or body is another configuration
+  std::string text = config_text(scene);
+  if (scene.body.shape == "mesh") text += "body.file_fnv1a = " + file_digest(scene, scene.body.file) + "\n";
+  for (const auto& g : scene.garments) text += "garment.file_fnv1a = " + file_digest(scene, g.file) + "\n";
+  Fnv1a f;
+  f.add(text.data(), text.size());
+  return f.hex();
 }
 
 Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {

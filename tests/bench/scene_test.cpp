@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
 
 #include "clothbench/bench/scene.hpp"
 #include "clothbench/config.h"
@@ -144,6 +147,23 @@ TEST(Scene, ConfigHashFollowsTheEffectiveConfiguration) {
   EXPECT_NE(config_text(base).find("garment.vertices = 400\n"), std::string::npos) << config_text(base);
 }
 
+// the files a run reads are part of its configuration: an edited pattern is another hash, the same bytes the same
+TEST(Scene, ConfigHashFollowsTheBytesOfTheFilesItNames) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("cb_hash_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string pattern = (dir / "mine.pattern").string();
+  const auto write = [&](const std::string& text) { std::ofstream(pattern, std::ios::trunc) << text; };
+  const std::string scene = "[[garment]]\nfile = \"" + pattern + "\"\n";
+  write("panel front\n  outline 0 0, 50 0, 50 110, 0 110\n");
+  const std::string first = config_hash(parse_scene(scene, "s.toml"));
+  write("panel front\n  outline 0 0, 50 0, 50 130, 0 130\n");
+  const std::string edited = config_hash(parse_scene(scene, "s.toml"));
+  EXPECT_NE(edited, first);
+  write("panel front\n  outline 0 0, 50 0, 50 110, 0 110\n");
+  EXPECT_EQ(config_hash(parse_scene(scene, "s.toml")), first);
+  std::filesystem::remove_all(dir);
+}
+
 // image space beyond the papers: views 2, 4 or 6 only, the side layer's width in millimetres
 TEST(Scene, ColliderViewsAndSideLayerWidth) {
   const Scene s = parse_scene("[collider]\nviews = 6\nside_layer_mm = 3\n", "s.toml");
@@ -171,7 +191,7 @@ TEST(Scene, ColliderViewsAndSideLayerWidth) {
   }
 }
 
-// issue 18: the moving body's skin must stay below the hit distance, or every contact would be pushed out
+// the moving body's skin must stay below the hit distance, or every contact would be pushed out
 TEST(Scene, BodySkinIsReadAndMustStayBelowTheHitDistance) {
   const Scene s = parse_scene("[body]\nskin_mm = 4\n", "s.toml");
   EXPECT_EQ(s.body.skin_mm, 4);
@@ -184,7 +204,7 @@ TEST(Scene, BodySkinIsReadAndMustStayBelowTheHitDistance) {
   EXPECT_NE(error_of("[body]\nskin_mm = -1\n").find("body.skin_mm"), std::string::npos);
 }
 
-// issue 20: jittered placements for claims' spread
+// jittered placements for claims' spread
 TEST(Scene, GarmentJitterAndSeedAreReadAndHashed) {
   const std::string text = "[[garment]]\nfile = \"a.pattern\"\njitter_mm = 5\nseed = 3\n";
   const Scene s = parse_scene(text, "s.toml");

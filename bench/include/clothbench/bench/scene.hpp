@@ -81,7 +81,8 @@ Scene parse_scene(const std::string& text, const std::string& name, const std::v
 /// The effective configuration: every field that decides a run (defaults included; not the name,
 /// description or path) as `section.key = value` lines in a fixed order, one block per garment.
 std::string config_text(const Scene& scene);
-/// FNV-1a 64-bit hash of config_text, 16 hex digits: equal for runs of the same configuration.
+/// FNV-1a 64-bit hash of config_text and of the bytes of the body and pattern files it names, 16 hex digits:
+/// equal for runs of the same configuration, another for an edited file.
 std::string config_hash(const Scene& scene);
 
 /// Resolves a body or pattern reference of a scene ("debian:human", "data:REL", scene-relative,
