@@ -36,7 +36,7 @@ Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const B
   return c.hit ? c : far;
 }
 
-/// What one query point left behind for the next query of the same point array (issue 19).
+/// What one query point left behind for the next query of the same point array.
 struct PointMemory {
   Vec3 at = Vec3::Zero();  ///< where it was answered [m]
   Real outside = 0;        ///< lower bound of its distance outside the body there [m]; 0: none

@@ -51,7 +51,7 @@ std::vector<std::pair<std::string, int>> placement_garments(const ExperimentCont
   return {{"dressing/shirt.toml", 1800}, {"dressing/dress.toml", 3840}};
 }
 
-// one garment, regime and collider sewn at jittered placements (issue 20: runs are deterministic, so the spread
+// one garment, regime and collider sewn at jittered placements (runs are deterministic, so the spread
 // comes from five placements 5 mm apart); the context caches the runs, so the claims share them
 std::vector<const RunResult*> placements(ExperimentContext& ctx, const std::string& scene, int vertices,
                                          const std::string& regime, const std::string& collider) {
@@ -185,7 +185,7 @@ Claim speed_claim(ExperimentContext& ctx) {
       own += std::string(" ") + g + " " + num(rows[os]["cdr_ms"].get<double>() / rows[is]["cdr_ms"].get<double>(), 1) + "x";
   }
   if (!own.empty()) c.numbers += "against the papers' own baseline (bbtree), is-cpu:" + own;
-  // the spread (issue 20): embree / is-cpu CD&R per iteration over the iterations claim's five placements
+  // the spread: embree / is-cpu CD&R per iteration over the iterations claim's five placements
   double spread_lo = 1e300, spread_hi = 0;
   for (const auto& [scene, vertices] : placement_garments(ctx)) {
     if (ctx.colliders({"is-cpu", "embree"}).size() < 2) break;
@@ -498,10 +498,10 @@ Claim box_tree_claim(ExperimentContext& ctx) {
   return c;
 }
 
-// issue 26 (beyond the papers): image space with the cube of six views against the fastest exact object-space
+// beyond the papers: image space with the cube of six views against the fastest exact object-space
 // collider at the same sizes (pareto): crossings, and collision cost per iteration
 Claim views_claim(ExperimentContext& ctx) {
-  Claim c{"ours (issue 26)", "image space with 6 views matches object space's crossings at a lower cost",
+  Claim c{"ours (beyond the papers)", "image space with 6 views matches object space's crossings at a lower cost",
           "[pareto](pareto.md)", "", kNotRun};
   auto rows = rows_of(ctx, "pareto");
   int matched = 0, compared = 0;

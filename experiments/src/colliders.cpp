@@ -1,4 +1,4 @@
-// colliders (issue 19): each collider's own costs and accuracy on the walking body, and what
+// colliders: each collider's own costs and accuracy on the walking body, and what
 // temporal coherence buys in a simulation: the object-space side given a fair chance.
 #include <cmath>
 #include <random>

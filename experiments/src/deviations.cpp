@@ -1,4 +1,4 @@
-// deviations (issue 20): every place where our defaults depart from the papers, once, with the measured
+// deviations: every place where our defaults depart from the papers, once, with the measured
 // effect of switching it off where a switch exists (the dressed shirt and the walking skirt, is-cpu).
 #include <filesystem>
 #include <string>

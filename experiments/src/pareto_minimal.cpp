@@ -1,4 +1,4 @@
-// pareto and minimal (issue 8): speed against accuracy per garment, collider, resolution, map size
+// pareto and minimal: speed against accuracy per garment, collider, resolution, map size
 // and tol with the Pareto front marked; and the smallest model each garment needs.
 #include <algorithm>
 #include <cmath>
@@ -69,7 +69,7 @@ void mark_front(std::vector<Point>& pts, const std::vector<Axis>& axes, bool Poi
   }
 }
 
-// the garment's reference drape (issue 20): the first exact collider built, twice the largest size of the
+// the garment's reference drape: the first exact collider built, twice the largest size of the
 // matrix (the largest in --quick), the same budget
 struct Reference {
   std::string label;
@@ -98,7 +98,7 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g, cons
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (const char* tol : {"0.0025", "0.01"})
       configs.push_back({is, is + " 320 px tol " + std::string(tol), {std::string("collider.tol=") + tol}});
-  // more views than the papers' two (issue 26): the cube of six, and four (front/back, left/right)
+  // more views than the papers' two (beyond the papers): the cube of six, and four (front/back, left/right)
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (const char* views : {"4", "6"})
       configs.push_back({is, is + " 320 px " + std::string(views) + " views", {std::string("collider.views=") + views}});
@@ -182,7 +182,7 @@ void pareto(ExperimentContext& ctx) {
           "crossings and drape error RMS; the charts draw the front of time and the one accuracy axis they show. Every "
           "collider runs "
           "at every resolution; is-cpu also with 4 and 6 views (`collider.views`: front/back plus left/right, and "
-          "top/bottom: issue 26), which the papers did not have. Resolutions: ";
+          "top/bottom), which the papers did not have. Resolutions: ";
   for (const auto& g : kGarments) {
     body << g.name << " ";
     for (std::size_t i = 0; i < g.sizes.size(); ++i) body << (i ? ", " : "") << g.sizes[i];
@@ -236,7 +236,7 @@ void minimal(ExperimentContext& ctx) {
   struct Setup {
     std::string collider;
     bool faces;
-    int views = 2;        // image space: the papers' front/back, or the cube of six (issue 26)
+    int views = 2;        // image space: the papers' front/back, or the cube of six
     bool papers = false;  // image space: the papers' own test (z comparison on 8-bit maps, papers_image_space)
     std::string label() const {
       return collider + (views != 2 ? "+" + std::to_string(views) + "views" : "") + (papers ? "+papers-test" : "") +

@@ -22,6 +22,8 @@ namespace clothbench {
 
 namespace {
 
+// the papers'-clock rows' solver.limit_tolerance_mm [mm]
+constexpr const char* kPapersTolerance = "0.05";
 
 bool walking_body_present(ExperimentContext& ctx, const std::string& id) {
   const std::string body = data_path("body/mh_female_walk.glb");
@@ -90,7 +92,7 @@ std::vector<WalkVariant> walk_variants() {
   v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some});
   // the papers' clock with walking Eq. 5's averaging limit (with the directional one, Eq. 6, the dress diverges
   // there), its passes stopping at 0.05 mm
-  const auto papers_clock = [](std::vector<std::string> more, const std::string& tolerance_mm = "0.05") {
+  const auto papers_clock = [](std::vector<std::string> more, const std::string& tolerance_mm = kPapersTolerance) {
     more.insert(more.begin(), {"solver.limit=velocity", "solver.limit_tolerance_mm=" + tolerance_mm});
     return more;
   };
@@ -266,7 +268,7 @@ std::string speed_frontier(const std::vector<SpeedRun>& runs) {
          (other_clip.empty() ? "" : " On walk_08_02: " + other_clip + ".");
 }
 
-// the benchmark figure of issue 18 (the dress with sleeves, is-cpu, at the papers' clock, prepared ahead) and what
+// the benchmark figure (the dress with sleeves, is-cpu, at the papers' clock, prepared ahead) and what
 // bounds it on this machine: the body's side of a frame (skinning and maps, on the second thread)
 std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const std::vector<SpeedRun>& frontier) {
   if (r.frames == 0 || r.divergence) return "";
@@ -415,12 +417,11 @@ void walking_t2(ExperimentContext& ctx) {
       "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
       "animation time and the cloth takes `steps/frame` steps of dt per frame, in our stable regime and at the papers' "
       "clock (`solver.regime = papers`: dt 5 ms, equal point masses, soft springs, 32 limit passes; see dressing-t1; "
-      "the passes here stop once they change no point by more than 0.05 mm, `solver.limit_tolerance_mm`, which makes "
-      "them 1.7x cheaper on the dress with the same verdicts) with the walking "
+      "the passes here stop once they change no point by more than " + std::string(kPapersTolerance) +
+          " mm, `solver.limit_tolerance_mm`) with the walking "
       "paper's averaging limit (Eq. 5, `solver.limit = velocity`): with its directional limit (Eq. 6, the paper's "
       "choice for moving bodies, and the regime's default) the dress with sleeves diverges at that clock within the "
-      "first frames of the walk (the ablation row; traced per stage: the first cloth speeds above 4 m/s, on a body "
-      "moving at 2 m/s at most, come out of that limit's passes, whose rear-catches-up rule does not keep momentum), "
+      "first frames of the walk (the ablation row: that limit's rear-catches-up rule does not keep momentum), "
       "while Eq. 5's mass-weighted mean keeps it. s/frame = wall time of the animation phase "
       "per frame: skinning (LBS, our analogue of the paper's reading the body file), map re-render, BVH refit or "
       "(vdb) the body's signed distance field voxelised again, and cloth (CD&R + CS); vdb runs half a second in the "
@@ -432,18 +433,17 @@ void walking_t2(ExperimentContext& ctx) {
       "cloth step within the frame sees the contacts as they were at the step's time, d(t - tau) = d(t) + "
       "(n . v_body) tau (`body.move_between_frames`); points found inside are moved out along the contact normal "
       "(`solver.push_out`, Durupinar Eq. 3); the walking paper's reaction force is on (walking Eq. 16, "
-      "`solver.reaction_force`); while it moves the body is answered `body.skin_mm` thicker (4.5 mm for the skirt, 4 "
-      "mm for the dress), which keeps the straight springs between resting vertices from cutting the curved "
-      "surface they lie on by L^2 / 8R (3.3 cm long at the papers' 672-vertex skirt, 3.6 cm at the threshold: 3.2 "
-      "mm on a 5 cm thigh; the dress's 2.3 cm springs 1.6 mm); image space renders the cube of six views "
+      "`solver.reaction_force`); while it moves the body is answered `body.skin_mm` thicker (scenes/walking/*.toml), "
+      "which keeps the straight springs between resting vertices from cutting the curved surface they lie on (by up "
+      "to L^2 / 8R, a spring of length L on a surface of radius R); image space renders the cube of six views "
       "(`collider.views = 6`): with the papers' front/back pair the swinging hands hide the hips and the cloth "
       "caught between is pushed the wrong way (the ablation row runs the papers' image space whole: the front/back "
       "pair, one surface per camera, the z comparison of walking Eq. 12 on 8-bit maps); and each pair peels five "
       "surfaces along its axis (`collider.layers = 5`, depth peeling; with the far camera's nearest one, the six a "
       "line through both arms and the torso crosses): with one surface per camera the six views make a visual "
       "hull, and a sleeve point inside the arm next to the armpit, hidden from the side cameras by the "
-      "torso and the other arm and from the rest by the arm itself, was answered by the arm's front or back 2-3 cm "
-      "away and stayed 9-13 mm inside. Each of these has an ablation row (is-cpu, walk_07_01). Image space draws and "
+      "torso and the other arm and from the rest by the arm itself, was answered by the arm's front or back and "
+      "stayed inside. Each of these has an ablation row (is-cpu, walk_07_01). Image space draws and "
       "reads back only the map rows that the cloth's bounding box, grown by `collider.query_margin_mm` (100 mm), "
       "spans, since a frame's queries come from there; the row \"maps of every row\" (is-gl, is-cpu) draws them "
       "all: the same motion, the maps' cost beside. The rows \"next frame prepared ahead (2 threads)\" "

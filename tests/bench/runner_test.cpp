@@ -209,7 +209,7 @@ TEST(Runner, Rk45SewsAndDrapesTheSkirtWithoutDiverging) {
 namespace clothbench {
 namespace {
 
-// issue 18: the body between frames. A sphere of radius 0.25 m moving at 1 m/s along +x, posed at a frame's end;
+// The body between frames. A sphere of radius 0.25 m moving at 1 m/s along +x, posed at a frame's end;
 // a point 1 cm inside its leading side was 1 cm outside it 20 ms earlier, and the wrapper says so
 TEST(BodyBetweenFrames, AStepBeforeThePoseSeesTheBodyWhereItWasThen) {
   SphereCollider sphere(Vec3::Zero(), 0.25f);

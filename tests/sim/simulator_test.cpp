@@ -358,7 +358,7 @@ TEST(Simulator, VelocityLimitsHoldStrainWhereNoneStretches) {
       show(velocity1).c_str(), show(zero1).c_str(), show(directional1).c_str());
   ASSERT_TRUE(none && velocity && zero && directional && directional1);
   EXPECT_GT(*none, 0.5f);  // far beyond the 10 % threshold
-  // issue 2: within threshold + 1 %
+  // within threshold + 1 %
   EXPECT_LE(*velocity, 0.11f);
   EXPECT_LE(*zero, 0.11f);
   EXPECT_LE(*directional, 0.11f);

@@ -1,5 +1,5 @@
 #pragma once
-/// The body between animation frames (issue 18): a collider holds the body posed at a frame's end, yet the cloth
+/// The body between animation frames: a collider holds the body posed at a frame's end, yet the cloth
 /// steps through the whole frame. BodyBetweenFrames wraps any collider and answers a step taken `tau` seconds
 /// before that pose with each contact's depth as it was then, to first order in the body's motion along its
 /// normal: d(t - tau) = d(t) + (n . v_body) tau. A surface moving outward has not yet reached the cloth it holds

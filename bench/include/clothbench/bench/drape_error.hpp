@@ -1,5 +1,5 @@
 #pragma once
-/// Drape error (issue 20): how far one drape lies from a reference drape of the same garment, whatever the two
+/// Drape error: how far one drape lies from a reference drape of the same garment, whatever the two
 /// resolutions. Each cloth is a surface (its quads as two triangles each); every vertex of one is measured to the
 /// other's surface and back (a symmetric point-to-surface distance), so a coarse and a fine meshing of the same
 /// drape are close, and the error discriminates where "vertices inside the body" is 0 for nearly every run.

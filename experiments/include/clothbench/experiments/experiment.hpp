@@ -14,7 +14,7 @@
 
 namespace clothbench {
 
-/// The solver regimes the reproduction tables report side by side (issue 17): ours, then the papers' clock.
+/// The solver regimes the reproduction tables report side by side: ours, then the papers' clock.
 inline constexpr const char* kRegimes[] = {"stable", "papers"};
 /// What names a run in a regime other than the stable one: SEP + regime (rows, pictures); empty for stable.
 inline std::string regime_suffix(const std::string& regime, const std::string& sep) {
