@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "../merged_points.hpp"
 #include "limiters.hpp"
 
 namespace clothbench {
@@ -32,6 +33,7 @@ class Projection final : public Limiter {
     points();
     if (structural_.empty()) return;
     for (std::size_t k = 0; k < structural_.size(); ++k) allowed_[k] = allowed(structural_[k]);
+    move_as_one(s.merged, s.m, s.inv_m, s.v, nullptr, [](int, Real) {});  // the response moved them apart
     p_ = s.x + s.dt * s.v;
     const Points3 start = p_;
     if (contacts_hold) lock_pressed_contacts();
