@@ -176,6 +176,15 @@ TEST(Limiters, TwoHeldFrontsWithFreeClothBetween) {
     }
 }
 
+// the projection's passes are Newton iterations over the whole strip: a few hold what the sweeps need 32 passes for
+TEST(Limiters, ProjectionHoldsTheHeldFrontsInAFewIterations) {
+  const auto eight = held_fronts("projection", 8), sweep = held_fronts("velocity", 8);
+  std::printf("[ fronts  ] projection, 8 iterations: %s; velocity, 8 passes: %s\n", show(eight).c_str(), show(sweep).c_str());
+  ASSERT_TRUE(eight.has_value() && sweep.has_value());
+  EXPECT_LE(*eight, kThreshold + 0.01f);
+  EXPECT_GT(*sweep, kThreshold + 0.01f);
+}
+
 TEST(Limiters, SleeveOnASwingingArm) {
   for (const char* limit : {"velocity", "directional", "tethers", "follow", "projection"})
     for (int passes : {1, 32}) {
