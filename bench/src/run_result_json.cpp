@@ -43,6 +43,7 @@ void run_fields(J& j, R& r, F&& f) {
   f(j, "threads", r.threads), f(j, "prepared_frames", r.prepared_frames), f(j, "seam_gap_max_mm", r.seam_gap_max_mm);
   f(j, "strain_max", r.strain_max);
   f(j, "strain_p99", r.strain_p99), f(j, "strain_over", r.strain_over), f(j, "strain_max_where", r.strain_max_where);
+  f(j, "seam_gap_where", r.seam_gap_where);
   f(j, "depth_max_where", r.depth_max_where);
   f(j, "kinetic_energy", r.kinetic_energy), f(j, "animate_strain_max", r.animate_strain_max);
   f(j, "sew_iteration_ms", r.sew_iteration_ms);

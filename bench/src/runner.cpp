@@ -142,6 +142,8 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   ClothMesh cloth;
   for (const auto& g : scene.garments) {
     const Pattern pattern = load_pattern(resolve_scene_path(scene, g.file));
+    for (const std::string& w : seam_length_warnings(pattern))
+      std::fprintf(stderr, "clothbench: warning: %s: %s\n", resolve_scene_path(scene, g.file).c_str(), w.c_str());
     MeshingOptions options;
     options.target_vertices = g.vertices;
     options.spacing_cm = g.vertices > 0 ? 0 : g.spacing_cm;
@@ -577,6 +579,24 @@ std::string describe_spring(const Simulator& sim, int s) {
   return text;
 }
 
+// the widest open seam pair: its vertices, their panels and the gap ("" when every pair is within 0.01 mm)
+std::string describe_seam_gap(const Simulator& sim) {
+  const ClothMesh& mesh = sim.mesh();
+  int widest = -1;
+  Real gap = 1e-5f;
+  for (Eigen::Index p = 0; p < mesh.seam_pairs.cols(); ++p) {
+    const Real d = (sim.positions().col(mesh.seam_pairs(0, p)) - sim.positions().col(mesh.seam_pairs(1, p))).norm();
+    if (d > gap) gap = d, widest = static_cast<int>(p);
+  }
+  if (widest < 0) return "";
+  const int a = mesh.seam_pairs(0, widest), b = mesh.seam_pairs(1, widest);
+  const auto panel = [&](int v) { return mesh.panel_names[static_cast<std::size_t>(mesh.panel[static_cast<std::size_t>(v)])]; };
+  char text[200];
+  std::snprintf(text, sizeof text, "seam pair %d (vertices %d-%d, panels %s and %s), %.2f mm apart", widest, a, b,
+                panel(a).c_str(), panel(b).c_str(), 1e3 * double(gap));
+  return text;
+}
+
 // accuracy of the end state against the exact body (vertices, and quad midpoints with face queries;
 // crossings of the structural springs; penetrating faces)
 void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
@@ -591,6 +611,7 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), r.accuracy);
   oracle.measure_faces(sim.positions(), sim.mesh().quads, r.accuracy);
   r.seam_gap_max_mm = 1e3 * double(sim.seam_gap_max());
+  r.seam_gap_where = describe_seam_gap(sim);
   const StrainStats strain = sim.strain();
   r.strain_max = strain.max;
   r.strain_p99 = strain.p99;

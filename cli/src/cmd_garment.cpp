@@ -65,6 +65,14 @@ std::vector<double> seam_offsets(const MeshedPattern& m) {
   return out;
 }
 
+// per seam: its two edges as the file names them
+std::vector<std::string> seam_edges(const Pattern& pat) {
+  std::vector<std::string> out;
+  for (const Seam& s : pat.seams)
+    out.push_back(edge_label(pat, s.panel_a, s.edge_a) + " <-> " + edge_label(pat, s.panel_b, s.edge_b));
+  return out;
+}
+
 nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m,
                        const std::vector<PanelInfo>& infos) {
   nlohmann::json panels = nlohmann::json::array();
@@ -89,6 +97,8 @@ nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const Meshed
           {"seams", static_cast<int>(pat.seams.size())},
           {"seam_pairs", static_cast<int>(m.mesh.seam_pairs.cols())},
           {"seam_offset_max_cm", seam_offsets(m)},
+          {"seam_edges", seam_edges(pat)},
+          {"seam_warnings", seam_length_warnings(pat)},
           {"quads", static_cast<int>(m.mesh.quads.cols())},
           {"attached", static_cast<int>(m.mesh.attached.size())}};
 }
@@ -113,11 +123,14 @@ void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern
   const auto offsets = seam_offsets(m);
   for (std::size_t s = 0; s < pat.seams.size(); ++s) {
     const Seam& seam = pat.seams[s];
-    std::printf("    %s edge %d <-> %s edge %d  %s, %d pairs, partners up to %.2f cm apart along the seam\n",
-                pat.panels[static_cast<std::size_t>(seam.panel_a)].name.c_str(), seam.edge_a,
-                pat.panels[static_cast<std::size_t>(seam.panel_b)].name.c_str(), seam.edge_b,
+    const Panel& a = pat.panels[static_cast<std::size_t>(seam.panel_a)];
+    const Panel& b = pat.panels[static_cast<std::size_t>(seam.panel_b)];
+    std::printf("    %s (%.1f cm) <-> %s (%.1f cm)  %s, %d pairs, partners up to %.2f cm apart along the seam\n",
+                edge_label(pat, seam.panel_a, seam.edge_a).c_str(), edge_length_cm(a, seam.edge_a),
+                edge_label(pat, seam.panel_b, seam.edge_b).c_str(), edge_length_cm(b, seam.edge_b),
                 seam.reversed ? "reversed" : "aligned", m.seam_pair_count[s], offsets[s]);
   }
+  for (const std::string& w : seam_length_warnings(pat)) std::fprintf(stderr, "clothbench garment: warning: %s\n", w.c_str());
   std::printf("  attached       %zu vertices\n", m.mesh.attached.size());
 }
 

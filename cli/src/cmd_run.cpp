@@ -109,6 +109,7 @@ void print_summary(const RunArgs& a, const RunResult& r) {
     std::printf("  worst frame: strain max %.1f %% (--every-frame measures inside, depth and crossings too)\n",
                 100 * r.animate_strain_max);
   if (!r.strain_max_where.empty()) std::printf("  strain max at %s\n", r.strain_max_where.c_str());
+  if (!r.seam_gap_where.empty()) std::printf("  widest seam gap: %s\n", r.seam_gap_where.c_str());
   if (!r.depth_max_where.empty()) std::printf("  deepest: %s\n", r.depth_max_where.c_str());
   print_verdict(r);
 }

@@ -85,7 +85,10 @@ class Parser {
       fail("panel '" + current_->panel.name + "' has no 'end'");
     }
     if (drafts_.empty()) fail("empty pattern: no panels");
-    for (const auto& d : drafts_) pattern_.panels.push_back(d.panel);
+    for (const auto& d : drafts_) {
+      pattern_.panels.push_back(d.panel);
+      pattern_.panels.back().edge_names = d.edge_names;
+    }
     resolve_seams();
     return validated_pattern(std::move(pattern_), file_);
   }
@@ -501,6 +504,11 @@ Pattern load_pattern_text(const std::string& path) {
 
 std::string write_pattern(const Pattern& pattern) {
   std::ostringstream out;
+  // an edge by its name (after the panel's dot in edge_label), or e<index> when unnamed
+  const auto edge_word = [&](const Panel& p, int e) {
+    const std::string label = edge_label(pattern, static_cast<int>(&p - pattern.panels.data()), e);
+    return label.substr(p.name.size() + 1);
+  };
   auto xy = [](const Vec2d& p) { return format_number(p.x()) + " " + format_number(p.y()); };
   auto real = [](Real v) { return format_number(static_cast<double>(v)); };
   out << "# written by clothbench (write_pattern)\ngarment " << pattern.name << "\n";
@@ -515,22 +523,21 @@ std::string write_pattern(const Pattern& pattern) {
     for (int e = 0; e < p.edge_count(); ++e) {
       const int s0 = p.edge_begin[static_cast<std::size_t>(e)];
       const int s1 = e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n;
-      out << "  edge e" << e;
+      out << "  edge " << edge_word(p, e);
       for (int s = s0 + 1; s <= s1; ++s)
         out << (s == n ? " close" : " line " + xy(p.outline[static_cast<std::size_t>(s)]));
       out << "\n";
     }
     if (!p.attached_edges.empty()) {
       out << "  attach";
-      for (int e : p.attached_edges) out << " e" << e;
+      for (int e : p.attached_edges) out << " " << edge_word(p, e);
       out << "\n";
     }
     out << "end\n";
   }
   if (!pattern.seams.empty()) out << "\n";
   for (const auto& s : pattern.seams)
-    out << "seam " << pattern.panels[static_cast<std::size_t>(s.panel_a)].name << ".e" << s.edge_a << " "
-        << pattern.panels[static_cast<std::size_t>(s.panel_b)].name << ".e" << s.edge_b << " "
+    out << "seam " << edge_label(pattern, s.panel_a, s.edge_a) << " " << edge_label(pattern, s.panel_b, s.edge_b) << " "
         << (s.reversed ? "reversed" : "aligned") << "\n";
   return out.str();
 }

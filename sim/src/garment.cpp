@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -109,6 +110,37 @@ ClothMesh place_garment(const MeshedPattern& meshed, const Pattern& pat, const B
   }
   c.validate("garment " + pat.name);
   return c;
+}
+
+double edge_length_cm(const Panel& panel, int e) {
+  const auto n = static_cast<int>(panel.outline.size());
+  const int begin = panel.edge_begin[static_cast<std::size_t>(e)];
+  const int end = e + 1 < panel.edge_count() ? panel.edge_begin[static_cast<std::size_t>(e) + 1] : n;
+  double length = 0;
+  for (int s = begin; s < end; ++s)
+    length += (panel.outline[static_cast<std::size_t>((s + 1) % n)] - panel.outline[static_cast<std::size_t>(s)]).norm();
+  return length;
+}
+
+std::string edge_label(const Pattern& pattern, int panel, int edge) {
+  const Panel& p = pattern.panels[static_cast<std::size_t>(panel)];
+  const bool named = static_cast<std::size_t>(edge) < p.edge_names.size() && !p.edge_names[static_cast<std::size_t>(edge)].empty();
+  return p.name + "." + (named ? p.edge_names[static_cast<std::size_t>(edge)] : "e" + std::to_string(edge));
+}
+
+std::vector<std::string> seam_length_warnings(const Pattern& pattern, double tolerance) {
+  std::vector<std::string> out;
+  for (const Seam& s : pattern.seams) {
+    const double a = edge_length_cm(pattern.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a);
+    const double b = edge_length_cm(pattern.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b);
+    if (!(std::abs(a - b) > tolerance * std::max(a, b))) continue;
+    char line[256];
+    std::snprintf(line, sizeof line, "seam %s (%.1f cm) <-> %s (%.1f cm): the edges differ by %.0f %% of the longer",
+                  edge_label(pattern, s.panel_a, s.edge_a).c_str(), a, edge_label(pattern, s.panel_b, s.edge_b).c_str(),
+                  b, 100 * std::abs(a - b) / std::max(a, b));
+    out.push_back(line);
+  }
+  return out;
 }
 
 ClothMesh build_garment(const Pattern& pat, const MeshingOptions& o, const BodyFrame& body) {

@@ -39,6 +39,7 @@ TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   r.accuracy.crossings_pct = 0.61;
   r.strain_max = 0.151;
   r.strain_max_where = "spring 4863";
+  r.seam_gap_where = "seam pair 3";
   r.depth_max_where = "vertex 1916";
   r.sew_iteration_ms = {0.5f, 0.25f};
   r.converged = true;
@@ -59,6 +60,7 @@ TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   EXPECT_EQ(b.frame_samples[1].strain_p99, 0.07);
   EXPECT_EQ(b.window_seam_gap_mm, 1.5);
   EXPECT_EQ(b.depth_max_where, "vertex 1916");
+  EXPECT_EQ(b.seam_gap_where, "seam pair 3");
   RunResult none = r;
   none.divergence.reset();
   EXPECT_FALSE(run_result_from_json(to_json(none)).divergence.has_value());

@@ -42,6 +42,7 @@ void expect_same(const Pattern& a, const Pattern& b) {
       EXPECT_EQ(x.outline[i], y.outline[i]) << x.name << " point " << i;
     EXPECT_EQ(x.edge_begin, y.edge_begin) << x.name;
     EXPECT_EQ(x.attached_edges, y.attached_edges) << x.name;
+    EXPECT_EQ(x.edge_names, y.edge_names) << x.name;
     EXPECT_EQ(x.placement.anchor, y.placement.anchor) << x.name;
     EXPECT_EQ(x.placement.offset_cm, y.placement.offset_cm) << x.name;
     EXPECT_EQ(x.placement.yaw_deg, y.placement.yaw_deg) << x.name;
@@ -122,6 +123,27 @@ TEST(PatternFile, GarmentFilesRoundTrip) {
     const Pattern back = parse_pattern(write_pattern(p), "written.pattern");
     expect_same(p, back);
   }
+}
+
+// a seam sewing edges of different lengths is named, with both lengths, by the names the file gives its edges;
+// no shipped garment has one
+TEST(PatternFile, SeamsOfDifferentLengthsAreNamedWithTheirLengths) {
+  const Pattern p = parse_pattern(
+      "garment g\n"
+      "panel a\n  start 0 0\n  edge bottom line 30 0\n  edge right line 30 56.6\n  edge top line 0 56.6\n"
+      "  edge left close\nend\n"
+      "panel b\n  start 0 0\n  edge bottom line 30 0\n  edge right line 30 30.3\n  edge top line 0 30.3\n"
+      "  edge left close\nend\n"
+      "seam a.right b.left\nseam a.bottom b.bottom\n",
+      "t.pattern");
+  EXPECT_EQ(edge_label(p, 0, 1), "a.right");
+  EXPECT_NEAR(edge_length_cm(p.panels[0], 1), 56.6, 1e-9);
+  const auto warnings = seam_length_warnings(p);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "seam a.right (56.6 cm) <-> b.left (30.3 cm): the edges differ by 46 % of the longer");
+  for (const char* name : {"shirt", "shirt_sleeves", "skirt", "dress", "dress_sleeves", "trousers",
+                           "durupinar_trousers", "durupinar_skirt", "tablecloth"})
+    EXPECT_TRUE(seam_length_warnings(load_pattern(kGarments + name + ".pattern")).empty()) << name;
 }
 
 TEST(PatternFile, ErrorsNameTheLine) {

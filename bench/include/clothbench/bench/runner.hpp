@@ -70,6 +70,7 @@ struct RunResult {
   double strain_max = 0, strain_p99 = 0;
   double strain_over = 0;       ///< share of the structural springs over threshold + 1 %, fraction
   std::string strain_max_where; ///< the most strained structural spring: its ends, height, contacts, seams
+  std::string seam_gap_where;   ///< the widest open seam pair: its vertices and panels ("" when all are closed)
   std::string depth_max_where;  ///< measure_frames: the deepest vertex of the deepest frame: where, when, contact
   double kinetic_energy = 0;
   double animate_strain_max = 0;           ///< largest structural strain seen at any animation frame

@@ -35,6 +35,7 @@ struct Panel {
   std::vector<int> edge_begin;  ///< outline index where each edge starts (ascending, first 0)
   Placement placement;
   std::vector<int> attached_edges;  ///< edges whose mesh vertices are bound to the body (Durupinar 3.2)
+  std::vector<std::string> edge_names;  ///< as written in the pattern file, one per edge (empty: unnamed)
 
   int edge_count() const { return static_cast<int>(edge_begin.size()); }
 };
@@ -107,6 +108,15 @@ bool outline_self_intersects(const std::vector<Vec2d>& outline);
 /// 2D pattern; quads where all four corners are kept, triangles (quads repeating their third corner)
 /// where three are.
 MeshedPattern mesh_pattern(const Pattern& pattern, double spacing_cm, bool attach = true);
+
+/// The length of edge `e` of a panel along its outline [cm].
+double edge_length_cm(const Panel& panel, int e);
+/// An edge as the pattern file writes it: "panel.edge" ("panel.e<index>" for an unnamed edge).
+std::string edge_label(const Pattern& pattern, int panel, int edge);
+/// One line for each seam whose two edges differ in length by more than `tolerance` of the longer: both edges by
+/// name with their lengths (the seam spreads the shorter edge's partners over the longer one's length, so the
+/// garment closes only stretched or gathered there).
+std::vector<std::string> seam_length_warnings(const Pattern& pattern, double tolerance = 0.05);
 
 /// Meshes with `options`: a fixed spacing, or the spacing whose vertex count is closest to the target.
 MeshedPattern mesh_pattern(const Pattern& pattern, const MeshingOptions& options);
