@@ -239,18 +239,20 @@ struct SpeedRun {
   bool strain_misses;  // over threshold + 1 % at some frame
 };
 
-// the fastest of the runs on walk_07_01 within inside, depth and crossings at every frame (nullptr: none)
-const SpeedRun* fastest_within(const std::vector<SpeedRun>& runs) {
+// the fastest of the runs on walk_07_01 within inside, depth and crossings at every frame, and with `strain` within
+// its limit too (nullptr: none)
+const SpeedRun* fastest_within(const std::vector<SpeedRun>& runs, bool strain = false) {
   const SpeedRun* best = nullptr;
   for (const SpeedRun& s : runs)
-    if (s.clip == "walk_07_01" && s.misses.empty() && (!best || s.fps > best->fps)) best = &s;
+    if (s.clip == "walk_07_01" && s.misses.empty() && !(strain && s.strain_misses) && (!best || s.fps > best->fps))
+      best = &s;
   return best;
 }
 
 // "\"label\" (12.3 frames/s, missing ...)"
 std::string speed_run_text(const SpeedRun& s) {
-  return "\"" + s.variant + "\" (" + num(s.fps, 1) + " frames/s" + (s.misses.empty() ? "" : ", missing " + s.misses) +
-         ")";
+  return "\"" + s.variant + "\" (" + num(s.fps, 1) + " frames/s, strain " + num(s.strain_pct, 0) + " %" +
+         (s.strain_misses ? " over its limit" : "") + (s.misses.empty() ? "" : ", missing " + s.misses) + ")";
 }
 
 // the fastest of those runs on walk_07_01 within inside, depth and crossings, those that pass 100 frames/s with what
@@ -268,8 +270,7 @@ std::string speed_frontier(const std::vector<SpeedRun>& runs) {
   return " What the accuracy buys, from the dress's rows prepared ahead at the papers' clock on walk_07_01 (looser "
          "limit passes, fewer surfaces and pixels, the colliders' body simplified, one limit pass with the papers' "
          "own image space): " +
-         (best ? "the fastest within inside, depth and crossings at every frame is \"" + best->variant + "\" at " +
-                     num(best->fps, 1) + " frames/s"
+         (best ? "the fastest within inside, depth and crossings at every frame is " + speed_run_text(*best)
                : std::string("none stays within inside, depth and crossings at every frame")) +
          "; " + (best && best->fps >= 100 ? "also " : "") +
          "at 100 frames/s or more: " + (fast.empty() ? std::string("none") : fast) + "." +
@@ -283,23 +284,32 @@ std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const
   const FrameTimes f = frame_times(r);
   const double body_ms = f.skinning_ms + f.maps_ms;
   const std::string misses = accuracy_misses(r);
+  // a headline only for a row that meets every limit at every frame, strain included
+  const SpeedRun* all = fastest_within(frontier, true);
   const SpeedRun* best = fastest_within(frontier);
-  const std::string headline =
-      best ? "**" + num(best->fps, 1) +
-                 " frames/s** at the fastest settings that stay within inside, depth and "
-                 "crossings at every frame (\"" +
-                 best->variant + "\": the cloth " + num(best->times.cloth_ms, 1) + " ms a frame, the body's side " +
-                 num(best->times.skinning_ms + best->times.maps_ms, 1) + " ms; strain " + num(best->strain_pct, 0) +
-                 " %, " + (best->strain_misses ? "over" : "within") + " its limit), and "
-           : std::string();
+  const auto settings = [](const SpeedRun& s) {
+    return "\"" + s.variant + "\": the cloth " + num(s.times.cloth_ms, 1) + " ms a frame, the body's side " +
+           num(s.times.skinning_ms + s.times.maps_ms, 1) + " ms; strain " + num(s.strain_pct, 0) + " %";
+  };
+  std::string lead =
+      all ? "**" + num(all->fps, 1) + " frames/s** meeting every limit at every frame, strain included (" +
+                settings(*all) + "); "
+          : "no row here meets every limit at every frame once strain counts, so none is a headline; ";
+  if (best && best != all)
+    lead += "the fastest within inside, depth and crossings at every frame runs at " + num(best->fps, 1) +
+            " frames/s (" + settings(*best) + (best->strain_misses ? ", over its limit" : "") + "); ";
+  const bool tight_strain = 100 * r.animate_strain_max > 100 * r.strain_threshold + 1;
+  const std::string tight_misses =
+      misses + (tight_strain ? std::string(misses.empty() ? "" : "; ") + "strain " + num(100 * r.animate_strain_max, 1) +
+                                   " % > " + num(100 * r.strain_threshold + 1, 0) + " %"
+                             : std::string());
   return "**Speed** (the dress with sleeves, " + std::to_string(r.vertices) +
          " vertices, is-cpu, walk_07_01, skinning, maps and cloth, the papers' clock with walking Eq. 5's limit and "
          "the next frame prepared on a second thread; " +
-         num(p.fps, 1) + " frames/s in the paper): " + headline + "**" + num(1 / f.s, 1) +
-         " frames/s** with the tight settings (\"papers' clock, Eq. 5 limit, next frame prepared ahead\": passes to "
-         "0.05 mm, six views of five surfaces, the exact body), " +
-         (misses.empty() ? "inside, depth and crossings within their limits at every frame"
-                         : "missing the limits: " + misses) +
+         num(p.fps, 1) + " frames/s in the paper): " + lead + "the tight settings (\"papers' clock, Eq. 5 limit, next " +
+         "frame prepared ahead\": passes to 0.05 mm, six views of five surfaces, the exact body) run at " +
+         num(1 / f.s, 1) + " frames/s, " +
+         (tight_misses.empty() ? "meeting every limit at every frame" : "missing the limits: " + tight_misses) +
          ". There the cloth takes " + num(f.cloth_ms, 1) + " ms per frame (" + num(r.steps_per_frame, 0) +
          " steps), the body's side " + num(body_ms, 1) + " ms (skinning " + num(f.skinning_ms, 1) +
          ", maps of six views with five layers " + num(f.maps_ms, 1) +
