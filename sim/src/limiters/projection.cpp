@@ -20,6 +20,7 @@
 
 #include "../merged_points.hpp"
 #include "limiters.hpp"
+#include "stretch_rules.hpp"
 
 namespace clothbench {
 
@@ -99,12 +100,11 @@ class Projection final : public Limiter {
     allowed_.resize(structural_.size());
   }
 
-  // the length a spring may end the step with: (1 + threshold) l0, or, one already longer, its length shortened by
-  // `speed` dt at most (as the velocity sweeps do: all of the excess in one step would be a speed that outlives it)
+  // the length a spring may end the step with, as the velocity sweeps allow it
   Real allowed(const Spring& e) const {
-    const Real max_len = (1 + params_.threshold) * s_->mesh.rest_length[e.index];
     const Real len = (s_->x.col(e.vb) - s_->x.col(e.va)).norm();
-    return std::max(max_len, len) - std::max(std::min(len - max_len, params_.speed * s_->dt), Real(0));
+    return stretch_rules::allowed_length(len, (1 + params_.threshold) * s_->mesh.rest_length[e.index],
+                                         params_.speed * s_->dt);
   }
 
   // how far point i ends the step outside the body's moved surface (< 0: inside) [m]

@@ -1,12 +1,20 @@
 #pragma once
 // The velocity limits' rules for one over-stretched spring (limiter.hpp documents them), inline for the sweep's
 // per-spring step. sim/src only.
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include "clothbench/sim/types.hpp"
 
 namespace clothbench::stretch_rules {
+
+// the length a spring of current length `len` may end the step with: max_len = (1 + threshold) l0, or, one already
+// longer, its length shortened by `most` (speed dt) at most: all of the excess in one step would be a speed that
+// outlives it
+inline Real allowed_length(Real len, Real max_len, Real most) {
+  return std::max(max_len, len) - std::max(std::min(len - max_len, most), Real(0));
+}
 
 // walking Eq. 5 averages, keeping the relative velocity `target`; with unequal masses the mass-weighted mean keeps
 // momentum (the papers' points all have one mass, where both are the same)

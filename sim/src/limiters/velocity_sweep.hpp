@@ -13,6 +13,7 @@
 
 #include "../merged_points.hpp"
 #include "clothbench/sim/limiter.hpp"
+#include "stretch_rules.hpp"
 
 namespace clothbench {
 
@@ -270,7 +271,7 @@ void VelocitySweep<Derived>::limit_spring(const SweptSpring& e) {
   // a spring already past max_len (pinched between two moving body parts, dragged by the response,
   // stretched when a seam merged) keeps its length but for `speed` dt: shortening it by all of the
   // excess in one step takes excess/dt (12 mm at dt 0.16 ms is 80 m/s), a speed that outlives the step
-  const Real allowed = std::max(max_len, len) - std::max(std::min(len - max_len, params_.speed * dt_), Real(0));
+  const Real allowed = stretch_rules::allowed_length(len, max_len, params_.speed * dt_);
   const Real target = static_cast<const Derived*>(this)->target((allowed - d.dot(u)) / dt_);
   if (vb - va <= target) return;  // only further elongation is forbidden: a spring may shorten
   if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
