@@ -504,11 +504,6 @@ Pattern load_pattern_text(const std::string& path) {
 
 std::string write_pattern(const Pattern& pattern) {
   std::ostringstream out;
-  // an edge by its name (after the panel's dot in edge_label), or e<index> when unnamed
-  const auto edge_word = [&](const Panel& p, int e) {
-    const std::string label = edge_label(pattern, static_cast<int>(&p - pattern.panels.data()), e);
-    return label.substr(p.name.size() + 1);
-  };
   auto xy = [](const Vec2d& p) { return format_number(p.x()) + " " + format_number(p.y()); };
   auto real = [](Real v) { return format_number(static_cast<double>(v)); };
   out << "# written by clothbench (write_pattern)\ngarment " << pattern.name << "\n";
@@ -523,14 +518,14 @@ std::string write_pattern(const Pattern& pattern) {
     for (int e = 0; e < p.edge_count(); ++e) {
       const int s0 = p.edge_begin[static_cast<std::size_t>(e)];
       const int s1 = e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n;
-      out << "  edge " << edge_word(p, e);
+      out << "  edge " << edge_name(p, e);
       for (int s = s0 + 1; s <= s1; ++s)
         out << (s == n ? " close" : " line " + xy(p.outline[static_cast<std::size_t>(s)]));
       out << "\n";
     }
     if (!p.attached_edges.empty()) {
       out << "  attach";
-      for (int e : p.attached_edges) out << " " << edge_word(p, e);
+      for (int e : p.attached_edges) out << " " << edge_name(p, e);
       out << "\n";
     }
     out << "end\n";

@@ -112,20 +112,14 @@ ClothMesh place_garment(const MeshedPattern& meshed, const Pattern& pat, const B
   return c;
 }
 
-double edge_length_cm(const Panel& panel, int e) {
-  const auto n = static_cast<int>(panel.outline.size());
-  const int begin = panel.edge_begin[static_cast<std::size_t>(e)];
-  const int end = e + 1 < panel.edge_count() ? panel.edge_begin[static_cast<std::size_t>(e) + 1] : n;
-  double length = 0;
-  for (int s = begin; s < end; ++s)
-    length += (panel.outline[static_cast<std::size_t>((s + 1) % n)] - panel.outline[static_cast<std::size_t>(s)]).norm();
-  return length;
+std::string edge_name(const Panel& panel, int e) {
+  const auto i = static_cast<std::size_t>(e);
+  return i < panel.edge_names.size() && !panel.edge_names[i].empty() ? panel.edge_names[i] : "e" + std::to_string(e);
 }
 
 std::string edge_label(const Pattern& pattern, int panel, int edge) {
   const Panel& p = pattern.panels[static_cast<std::size_t>(panel)];
-  const bool named = static_cast<std::size_t>(edge) < p.edge_names.size() && !p.edge_names[static_cast<std::size_t>(edge)].empty();
-  return p.name + "." + (named ? p.edge_names[static_cast<std::size_t>(edge)] : "e" + std::to_string(edge));
+  return p.name + "." + edge_name(p, edge);
 }
 
 std::vector<std::string> seam_length_warnings(const Pattern& pattern, double tolerance) {

@@ -23,17 +23,10 @@ std::pair<int, int> edge_segments(const Panel& p, int e) {
 
 Vec2d outline_point(const Panel& p, int s) { return p.outline[static_cast<std::size_t>(s) % p.outline.size()]; }
 
-double edge_length(const Panel& p, int e) {
-  const auto [s0, s1] = edge_segments(p, e);
-  double len = 0;
-  for (int s = s0; s < s1; ++s) len += (outline_point(p, s + 1) - outline_point(p, s)).norm();
-  return len;
-}
-
 // The point at arc fraction t (0..1) of edge e of panel p.
 Vec2d point_on_edge(const Panel& p, int e, double t) {
   const auto [s0, s1] = edge_segments(p, e);
-  double left = t * edge_length(p, e);
+  double left = t * edge_length_cm(p, e);
   for (int s = s0; s < s1; ++s) {
     const Vec2d a = outline_point(p, s), b = outline_point(p, s + 1);
     const double l = (b - a).norm();
@@ -148,8 +141,8 @@ void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<Pan
     auto& va = ta > 0.5 ? ra.back() : ra.front();
     auto& vb = tb > 0.5 ? rb.back() : rb.front();
     const bool a_on = std::abs(va.first - ta) < 1e-9, b_on = std::abs(vb.first - tb) < 1e-9;
-    const bool a_near = std::abs(va.first - ta) * edge_length(pa, s.edge_a) < h && !on_several_edges(ga, va.second);
-    const bool b_near = std::abs(vb.first - tb) * edge_length(pb, s.edge_b) < h && !on_several_edges(gb, vb.second);
+    const bool a_near = std::abs(va.first - ta) * edge_length_cm(pa, s.edge_a) < h && !on_several_edges(ga, va.second);
+    const bool b_near = std::abs(vb.first - tb) * edge_length_cm(pb, s.edge_b) < h && !on_several_edges(gb, vb.second);
     if (a_on && !b_on && b_near && !b_locked && !occupied(gb, point_on_edge(pb, s.edge_b, tb))) {
       vb.first = tb;
       joined.push_back({s.panel_b, edge_at_corner(pb, s.edge_b, tb), vb.second, 1 - tb});
@@ -174,6 +167,13 @@ void place_run(const Panel& p, int edge, PanelGrid& g) {
 }
 
 }  // namespace
+
+double edge_length_cm(const Panel& p, int e) {
+  const auto [s0, s1] = edge_segments(p, e);
+  double len = 0;
+  for (int s = s0; s < s1; ++s) len += (outline_point(p, s + 1) - outline_point(p, s)).norm();
+  return len;
+}
 
 namespace garment_detail {
 
@@ -235,8 +235,8 @@ double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::
     return 0.0;
   };
   const double ta = fraction(ra, pair[0]), tb = fraction(rb, pair[1]);
-  const double la = edge_length(pat.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a);
-  const double lb = edge_length(pat.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b);
+  const double la = edge_length_cm(pat.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a);
+  const double lb = edge_length_cm(pat.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b);
   return std::abs(ta - (s.reversed ? 1 - tb : tb)) * 0.5 * (la + lb);
 }
 }  // namespace garment_detail

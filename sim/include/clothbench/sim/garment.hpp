@@ -111,7 +111,9 @@ MeshedPattern mesh_pattern(const Pattern& pattern, double spacing_cm, bool attac
 
 /// The length of edge `e` of a panel along its outline [cm].
 double edge_length_cm(const Panel& panel, int e);
-/// An edge as the pattern file writes it: "panel.edge" ("panel.e<index>" for an unnamed edge).
+/// An edge's name as the pattern file writes it ("e<index>" for an unnamed edge).
+std::string edge_name(const Panel& panel, int e);
+/// An edge as a seam names it: "panel.edge".
 std::string edge_label(const Pattern& pattern, int panel, int edge);
 /// One line for each seam whose two edges differ in length by more than `tolerance` of the longer: both edges by
 /// name with their lengths (the seam spreads the shorter edge's partners over the longer one's length, so the
