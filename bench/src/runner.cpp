@@ -141,9 +141,10 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   if (scene.garments.empty()) throw InputError(located(scene.path, 0, "the scene has no [[garment]]"));
   ClothMesh cloth;
   for (const auto& g : scene.garments) {
-    const Pattern pattern = load_pattern(resolve_scene_path(scene, g.file));
+    const std::string path = resolve_scene_path(scene, g.file);
+    const Pattern pattern = load_pattern(path);
     for (const std::string& w : seam_length_warnings(pattern))
-      std::fprintf(stderr, "clothbench: warning: %s: %s\n", resolve_scene_path(scene, g.file).c_str(), w.c_str());
+      std::fprintf(stderr, "clothbench: warning: %s: %s\n", path.c_str(), w.c_str());
     MeshingOptions options;
     options.target_vertices = g.vertices;
     options.spacing_cm = g.vertices > 0 ? 0 : g.spacing_cm;
@@ -158,7 +159,7 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
       }
       cloth.append(garment);
     } catch (const std::invalid_argument& e) {
-      throw InputError(located(resolve_scene_path(scene, g.file), 0, e.what()));
+      throw InputError(located(path, 0, e.what()));
     }
   }
   return cloth;
@@ -582,14 +583,11 @@ std::string describe_spring(const Simulator& sim, int s) {
 // the widest open seam pair: its vertices, their panels and the gap ("" when every pair is within 0.01 mm)
 std::string describe_seam_gap(const Simulator& sim) {
   const ClothMesh& mesh = sim.mesh();
-  int widest = -1;
-  Real gap = 1e-5f;
-  for (Eigen::Index p = 0; p < mesh.seam_pairs.cols(); ++p) {
-    const Real d = (sim.positions().col(mesh.seam_pairs(0, p)) - sim.positions().col(mesh.seam_pairs(1, p))).norm();
-    if (d > gap) gap = d, widest = static_cast<int>(p);
-  }
+  const int widest = sim.widest_seam_pair();
   if (widest < 0) return "";
   const int a = mesh.seam_pairs(0, widest), b = mesh.seam_pairs(1, widest);
+  const Real gap = (sim.positions().col(a) - sim.positions().col(b)).norm();
+  if (!(gap > 1e-5f)) return "";
   const auto panel = [&](int v) { return mesh.panel_names[static_cast<std::size_t>(mesh.panel[static_cast<std::size_t>(v)])]; };
   char text[200];
   std::snprintf(text, sizeof text, "seam pair %d (vertices %d-%d, panels %s and %s), %.2f mm apart", widest, a, b,

@@ -486,11 +486,19 @@ void Simulator::follow_attachments(const BodyFrame& body, Real time_before) {
   }
 }
 
+int Simulator::widest_seam_pair() const {
+  int widest = -1;
+  Real gap = -1;  // a NaN distance is never the widest
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
+    const Real d = (x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm();
+    if (d > gap) gap = d, widest = static_cast<int>(p);
+  }
+  return widest;
+}
+
 Real Simulator::seam_gap_max() const {
-  Real gap = 0;
-  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
-    gap = std::max(gap, (x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm());
-  return gap;
+  const int p = widest_seam_pair();
+  return p < 0 ? Real(0) : (x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm();
 }
 
 Real Simulator::sewn_fraction() const {

@@ -172,6 +172,8 @@ class Simulator {
 
   /// Largest distance between seam pair partners [m] (0 when the mesh has no seams).
   Real seam_gap_max() const;
+  /// The seam pair whose partners are farthest apart (-1 when the mesh has no seams).
+  int widest_seam_pair() const;
   /// Share of seam pairs merged, 0..1.
   Real sewn_fraction() const;
   StrainStats strain() const;
