@@ -1,6 +1,7 @@
 // Image-space collider costs: map rendering per frame (both views, depth + normal + velocity) for
 // every renderer (OpenGL through OSMesa, OpenGL through EGL, our CPU rasteriser), both encodings and three map
-// sizes, and the query cost per point.
+// sizes, and the walking dress's 6 views x 5 layers; the query cost per point, and per batch of the walking
+// dress's 2,300 points (is-egl: answered on its device, the batch's upload and read-back included).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -54,10 +55,13 @@ std::unique_ptr<MapRenderer> make_renderer(const std::string& name) {
 }
 
 // one frame's maps as update_body renders them: reset, both views, side layer
-void bm_render(benchmark::State& state, const std::string& renderer, bool float_maps, int size) {
+void bm_render(benchmark::State& state, const std::string& renderer, bool float_maps, int size, int views = 2,
+               int layers = 1) {
   ColliderOptions o;
   o.map_size = size;
   o.float_maps = float_maps;
+  o.views = views;
+  o.layers = layers;
   std::unique_ptr<Collider> c;
   try {
     c = std::make_unique<ImageSpaceCollider>(make_renderer(renderer), o, 0.0);
@@ -90,12 +94,22 @@ Points3 near_surface_points(const BodyFrame& body, int count) {
   return p;
 }
 
-void bm_query(benchmark::State& state, bool float_maps, DepthTest test) {
+void bm_query(benchmark::State& state, const std::string& renderer, bool float_maps, DepthTest test, int count,
+              int views = 2, int layers = 1) {
   ColliderOptions o;
   o.float_maps = float_maps;
-  ImageSpaceCollider c(make_cpu_map_renderer(), o, 0.0, test);
-  c.set_body(bench_body().frame);
-  const Points3 points = near_surface_points(bench_body().frame, 10000);
+  o.views = views;
+  o.layers = layers;
+  std::unique_ptr<ImageSpaceCollider> made;
+  try {
+    made = std::make_unique<ImageSpaceCollider>(make_renderer(renderer), o, 0.0, test);
+    made->set_body(bench_body().frame);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  ImageSpaceCollider& c = *made;
+  const Points3 points = near_surface_points(bench_body().frame, count);
   std::vector<Contact> out(static_cast<std::size_t>(points.cols()));
   for (auto _ : state) {
     c.query(PointsView(points), ContactsOut{out.data(), out.size()});
@@ -105,6 +119,7 @@ void bm_query(benchmark::State& state, bool float_maps, DepthTest test) {
   state.counters["time_per_point"] = benchmark::Counter(
       static_cast<double>(points.cols()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["hit_pct"] = 100.0 * static_cast<double>(c.stats().hits) / static_cast<double>(c.stats().points);
+  state.SetLabel(c.device());
 }
 
 void register_all() {
@@ -115,13 +130,30 @@ void register_all() {
             ("render/" + renderer + "/" + (float_maps ? "float" : "8bit") + "/" + std::to_string(size)).c_str(),
             [=](benchmark::State& s) { bm_render(s, renderer, float_maps, size); })
             ->Unit(benchmark::kMillisecond);
+  // the walking dress's maps (walking-t2: 6 views, 5 layers)
+  for (const std::string renderer : {"gl", "egl", "cpu"})
+    benchmark::RegisterBenchmark(("render/" + renderer + "/float/320/6views5layers").c_str(),
+                                 [=](benchmark::State& s) { bm_render(s, renderer, true, 320, 6, 5); })
+        ->Unit(benchmark::kMillisecond);
   for (const bool float_maps : {true, false})
     for (const DepthTest test : {DepthTest::kPapers, DepthTest::kTangentPlane})
       benchmark::RegisterBenchmark(("query/" + std::string(float_maps ? "float" : "8bit") + "/" +
                                     (test == DepthTest::kPapers ? "papers_z" : "tangent_plane") + "/10000pts")
                                        .c_str(),
-                                   [=](benchmark::State& s) { bm_query(s, float_maps, test); })
+                                   [=](benchmark::State& s) { bm_query(s, "cpu", float_maps, test, 10000); })
           ->Unit(benchmark::kMicrosecond);
+  // a batch of the walking dress's points, on the CPU and on is-egl's device
+  for (const std::string renderer : {"cpu", "egl"})
+    for (const int count : {2300, 10000})
+      for (const bool dress : {false, true})
+        benchmark::RegisterBenchmark(("query/" + renderer + "/float/tangent_plane/" + std::to_string(count) + "pts" +
+                                      (dress ? "/6views5layers" : ""))
+                                         .c_str(),
+                                     [=](benchmark::State& s) {
+                                       bm_query(s, renderer, true, DepthTest::kTangentPlane, count, dress ? 6 : 2,
+                                                dress ? 5 : 1);
+                                     })
+            ->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ namespace clothbench {
 // X(name) for every function, gl<name> in GL's headers
 #define CLOTHBENCH_GL_FUNCTIONS(X)                                                                                     \
   X(ActiveTexture)                                                                                                     \
-  X(AttachShader) X(BindBuffer) X(BindFramebuffer) X(BindRenderbuffer) X(BindTexture) X(BindVertexArray) X(BufferData) \
+  X(CopyTexSubImage2D) X(FramebufferTexture2D) X(AttachShader) X(BindBuffer) X(BindFramebuffer) X(BindRenderbuffer) X(BindTexture) X(BindVertexArray) X(BufferData) \
       X(CheckFramebufferStatus) X(Clear) X(ClearColor) X(ClearDepth) X(CompileShader) X(CreateProgram) X(CreateShader) \
           X(DeleteBuffers) X(DeleteFramebuffers) X(DeleteProgram) X(DeleteRenderbuffers) X(DeleteShader)               \
               X(DeleteTextures) X(DeleteVertexArrays) X(DepthFunc) X(Disable) X(DisableVertexAttribArray)              \
@@ -29,27 +29,37 @@ namespace clothbench {
                                       X(Uniform1f) X(Uniform1i) X(UniformMatrix4fv) X(UseProgram) X(VertexAttrib3f)    \
                                           X(VertexAttribPointer) X(Viewport)
 
+// OpenGL 4.3 (compute shaders, shader storage buffers): the maps kept on the device (gl_device_maps.cpp)
+#define CLOTHBENCH_GL_COMPUTE_FUNCTIONS(X)                                                                   \
+  X(BindBufferBase) X(BufferSubData) X(DispatchCompute) X(Finish) X(GetBufferSubData) X(GetIntegerv) X(MemoryBarrier) \
+      X(Uniform3f)
+
 // the gl<name> prototypes of GL's headers, as pointer types (GL 1.x functions have no PFN... typedef there)
 #define CLOTHBENCH_GL_TYPE(name) using name##_fn = std::remove_pointer_t<decltype(&::gl##name)>*;
 namespace gl_types {
 CLOTHBENCH_GL_FUNCTIONS(CLOTHBENCH_GL_TYPE)
+CLOTHBENCH_GL_COMPUTE_FUNCTIONS(CLOTHBENCH_GL_TYPE)
 }
 #undef CLOTHBENCH_GL_TYPE
 
 struct GlApi {
 #define CLOTHBENCH_GL_MEMBER(name) gl_types::name##_fn name = nullptr;
   CLOTHBENCH_GL_FUNCTIONS(CLOTHBENCH_GL_MEMBER)
+  CLOTHBENCH_GL_COMPUTE_FUNCTIONS(CLOTHBENCH_GL_MEMBER)
 #undef CLOTHBENCH_GL_MEMBER
 
-  // every function from `proc` (a name -> address lookup of the current context's provider); throws
-  // std::runtime_error "WHO: OpenGL function glNAME not found" for one it lacks
+  // every function from `proc` (a name -> address lookup of the current context's provider), the OpenGL 4.3 ones
+  // too when `compute`; throws std::runtime_error "WHO: OpenGL function glNAME not found" for one it lacks
   template <class Proc>
-  static GlApi load(Proc&& proc, const std::string& who) {
+  static GlApi load(Proc&& proc, const std::string& who, bool compute = false) {
     GlApi gl;
 #define CLOTHBENCH_GL_LOAD(name)                                     \
   gl.name = reinterpret_cast<gl_types::name##_fn>(proc("gl" #name)); \
   if (!gl.name) throw std::runtime_error(who + ": OpenGL function gl" #name " not found");
     CLOTHBENCH_GL_FUNCTIONS(CLOTHBENCH_GL_LOAD)
+    if (compute) {
+      CLOTHBENCH_GL_COMPUTE_FUNCTIONS(CLOTHBENCH_GL_LOAD)
+    }
 #undef CLOTHBENCH_GL_LOAD
     return gl;
   }

@@ -1,15 +1,20 @@
 // The OpenGL renderer of the image-space maps, on any provider's context (OSMesa, EGL): one FBO holding every
-// view, every call through the context's own functions (gl_api.hpp).
+// view, every call through the context's own functions (gl_api.hpp). On a context of OpenGL 4.3 the maps stay on
+// the device (gl_compute_maps.hpp) and answer queries there.
 #include <algorithm>
 #include <array>
+#include <functional>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "clothbench/collide_is/device_maps.hpp"
 #include "clothbench/collide_is/gl_context.hpp"
 #include "clothbench/collide_is/map_set.hpp"
 #include "gl_api.hpp"
+#include "gl_compute_maps.hpp"
 
 namespace clothbench {
 namespace {
@@ -55,20 +60,21 @@ void main() {
 }
 )";
 
-class GlMapRenderer final : public MapRenderer {
+class GlMapRenderer final : public MapRenderer, public DeviceMaps {
  public:
   explicit GlMapRenderer(std::unique_ptr<GlContext> context)
       : context_(std::move(context)), who_("is-" + context_->renderer_name()), name_(context_->renderer_name()) {
     if (!context_->make_current()) throw std::runtime_error(who_ + ": the OpenGL context cannot be made current");
-    gl_ = GlApi::load([this](const char* f) { return context_->proc(f); }, who_);
+    gl_ = GlApi::load([this](const char* f) { return context_->proc(f); }, who_, context_->compute());
     set_up();
+    if (context_->compute()) compute_ = std::make_unique<GlComputeMaps>(gl_, who_);
     context_->release();
   }
 
   ~GlMapRenderer() override {
     context_->make_current();
+    if (compute_) compute_->release();
     release_targets();
-    gl_.DeleteTextures(1, &previous_);
     gl_.DeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
     gl_.DeleteVertexArrays(1, &vao_);
     gl_.DeleteProgram(program_);
@@ -77,19 +83,65 @@ class GlMapRenderer final : public MapRenderer {
 
   std::string_view name() const override { return name_; }
   std::string device() const override { return device_; }
+  DeviceMaps* device_maps() override { return compute_ ? this : nullptr; }
 
+  // on the device: drawn there, then copied out; else each pass read back
   void render(const BodyFrame& body, MapSet& maps) override {
-    make_current();
-    targets(maps);
-    upload(body, maps.has_velocity);
-    draw(body, maps);
-    for (int view = 0; view < views_; ++view) read_back(maps, view, view);
-    for (int layer = 2; layer <= maps.frame.layers; ++layer) peel(body, maps, layer);
-    context_->release();
+    if (compute_) {
+      draw(body, maps, 0, 0);
+      copy(0, maps);
+      return;
+    }
+    const Current current(*this);
+    passes(body, maps, [&](int view, int map) { read_back(maps, view, map); });
     depth_from_zbuffer(maps);
   }
 
+  void draw(const BodyFrame& body, const MapSet& shape, int rings, int slot) override {
+    const Current current(*this);
+    compute_->begin(slot, shape);
+    passes(body, shape, [&](int view, int map) { compute_->resolve(slot, view, map, tex_[0], tex_[1]); });
+    compute_->side_layer(slot, rings);
+    gl_.Finish();
+  }
+
+  void query(int slot, PointsView points, DepthTest test, ViewRule rule, Real tol, Contact* out) override {
+    const Current current(*this);
+    compute_->query(slot, points, test, rule, tol, out);
+  }
+
+  void copy(int slot, MapSet& maps) override {
+    const Current current(*this);
+    compute_->copy(slot, maps);
+  }
+
  private:
+  // the context current on the calling thread for one call (one thread at a time), released after it
+  class Current {
+   public:
+    explicit Current(GlMapRenderer& r) : r_(r), lock_(r.mutex_) { r_.make_current(); }
+    ~Current() { r_.context_->release(); }
+    Current(const Current&) = delete;
+    Current& operator=(const Current&) = delete;
+
+   private:
+    GlMapRenderer& r_;
+    std::lock_guard<std::mutex> lock_;
+  };
+
+  // every view, then every peeled layer of the even views, each pass handed to `keep` (view, map) while its
+  // targets hold it
+  void passes(const BodyFrame& body, const MapSet& maps, const std::function<void(int, int)>& keep) {
+    targets(maps);
+    upload(body, maps.has_velocity);
+    draw_views(body, maps);
+    for (int view = 0; view < views_; ++view) keep(view, view);
+    for (int layer = 2; layer <= maps.frame.layers; ++layer) {
+      peel(body, maps);
+      for (int view = 0; view < views_; view += 2) keep(view, maps.frame.peel_map(view, layer));
+    }
+  }
+
   // shaders, uniforms and vertex arrays in the new context
   void set_up() {
     // shaders and their uniforms
@@ -101,11 +153,6 @@ class GlMapRenderer final : public MapRenderer {
     gl_.UseProgram(program_);
     gl_.Uniform1i(gl_.GetUniformLocation(program_, "previous"), 0);
     gl_.Uniform1f(gl_.GetUniformLocation(program_, "gap"), kPeelGap);
-    // the previous layer's z-buffer values, fetched texel by texel
-    gl_.GenTextures(1, &previous_);
-    gl_.BindTexture(GL_TEXTURE_2D, previous_);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     // vertex arrays: positions, normals, velocities, indices
     gl_.GenVertexArrays(1, &vao_);
     gl_.BindVertexArray(vao_);
@@ -164,7 +211,8 @@ class GlMapRenderer final : public MapRenderer {
   }
 
   // (re)creates the FBO when size, view count or encoding changed: size x (views x size), front
-  // below back, the extra views above them
+  // below back, the extra views above them; textures (normal, velocity, depth) that shaders may read, and the
+  // previous layer's depth (peel) in the depth target's format
   void targets(const MapSet& maps) {
     const bool same = fbo_ && size_ == maps.frame.size && views_ == maps.frame.views && float_ == maps.float_maps;
     if (same) return;
@@ -174,15 +222,19 @@ class GlMapRenderer final : public MapRenderer {
     float_ = maps.float_maps;
     gl_.GenFramebuffers(1, &fbo_);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    gl_.GenRenderbuffers(static_cast<GLsizei>(rbo_.size()), rbo_.data());
+    gl_.GenTextures(static_cast<GLsizei>(tex_.size()), tex_.data());
     const GLenum colour = float_ ? GL_RGBA32F : GL_RGBA8;
     const GLenum depth = float_ ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24;
-    const std::array<GLenum, 3> formats = {colour, colour, depth};
+    const std::array<GLenum, 4> formats = {colour, colour, depth, depth};
+    const std::array<GLenum, 4> data = {GL_RGBA, GL_RGBA, GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT};
     const std::array<GLenum, 3> points = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_DEPTH_ATTACHMENT};
-    for (std::size_t k = 0; k < rbo_.size(); ++k) {
-      gl_.BindRenderbuffer(GL_RENDERBUFFER, rbo_[k]);
-      gl_.RenderbufferStorage(GL_RENDERBUFFER, formats[k], size_, views_ * size_);
-      gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, points[k], GL_RENDERBUFFER, rbo_[k]);
+    for (std::size_t k = 0; k < tex_.size(); ++k) {
+      gl_.BindTexture(GL_TEXTURE_2D, tex_[k]);
+      gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      gl_.TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(formats[k]), size_, views_ * size_, 0, data[k], GL_FLOAT,
+                     nullptr);
+      if (k < points.size()) gl_.FramebufferTexture2D(GL_FRAMEBUFFER, points[k], GL_TEXTURE_2D, tex_[k], 0);
     }
     if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error(who_ + ": framebuffer of " + std::to_string(views_) + " x " + std::to_string(size_) +
@@ -192,7 +244,7 @@ class GlMapRenderer final : public MapRenderer {
   void release_targets() {
     if (!fbo_) return;
     gl_.DeleteFramebuffers(1, &fbo_);
-    gl_.DeleteRenderbuffers(static_cast<GLsizei>(rbo_.size()), rbo_.data());
+    gl_.DeleteTextures(static_cast<GLsizei>(tex_.size()), tex_.data());
     fbo_ = 0;
   }
 
@@ -218,7 +270,7 @@ class GlMapRenderer final : public MapRenderer {
   // every view, depth test keeping the surface nearest each camera; both targets always bound so
   // a moving frame after a static one needs no new shader variant (a static body's velocity
   // target gets zeros and is not read back)
-  void draw(const BodyFrame& body, const MapSet& maps) {
+  void draw_views(const BodyFrame& body, const MapSet& maps) {
     const std::array<GLenum, 2> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     gl_.DrawBuffers(2, buffers.data());
     clear();
@@ -252,24 +304,18 @@ class GlMapRenderer final : public MapRenderer {
     gl_.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(body.triangles.size()), GL_UNSIGNED_INT, nullptr);
   }
 
-  // depth peeling: layer `layer` of every even view, drawn again into the view's own rows (the
-  // same window coordinates, so the same depths, as the first pass and the CPU rasteriser) beyond
-  // layer - 1's z-buffer values, uploaded as a texture laid out as the target; read back into the layer's maps
-  void peel(const BodyFrame& body, MapSet& maps, int layer) {
-    const MapFrame& f = maps.frame;
-    const std::size_t n = maps.view_pixels();
-    previous_depth_.assign(views_ * n, 1.0f);
-    for (int view = 0; view < views_; view += 2)
-      std::copy_n(maps.z.begin() + f.peel_map(view, layer - 1) * n, n, previous_depth_.begin() + view * n);
+  // depth peeling: the next layer of every even view, drawn again into the view's own rows (the same window
+  // coordinates, so the same depths, as the first pass and the CPU rasteriser) beyond the last pass's z-buffer
+  // values, copied first into a depth texture the fragment shader reads
+  void peel(const BodyFrame& body, const MapSet& maps) {
     gl_.ActiveTexture(GL_TEXTURE0);
-    gl_.BindTexture(GL_TEXTURE_2D, previous_);
-    gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, size_, views_ * size_, 0, GL_RED, GL_FLOAT, previous_depth_.data());
+    gl_.BindTexture(GL_TEXTURE_2D, tex_[3]);
+    gl_.CopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, size_, views_ * size_);
     clear();
+    gl_.UseProgram(program_);
     gl_.Uniform1i(u_peel_, 1);
     for (int view = 0; view < views_; view += 2) draw_view(body, maps, view);
     gl_.Uniform1i(u_peel_, 0);
-    for (int view = 0; view < views_; view += 2) read_back(maps, view, f.peel_map(view, layer));
   }
 
   // z-buffer values and colours of view `view`'s rows the maps draw into map `map` (raw z-buffer values:
@@ -298,11 +344,12 @@ class GlMapRenderer final : public MapRenderer {
   std::unique_ptr<GlContext> context_;  // first member: destroyed after the GL objects the destructor deletes
   std::string who_, name_, device_;
   GlApi gl_;
-  GLuint program_ = 0, vao_ = 0, fbo_ = 0, previous_ = 0;
+  std::unique_ptr<GlComputeMaps> compute_;  // OpenGL 4.3 contexts: the maps kept on the device
+  std::mutex mutex_;                        // one call at a time holds the context
+  GLuint program_ = 0, vao_ = 0, fbo_ = 0;
   std::array<GLuint, 4> vbo_{};  // positions, normals, velocities, indices
-  std::array<GLuint, 3> rbo_{};  // normal, velocity, depth
+  std::array<GLuint, 4> tex_{};  // normal, velocity, depth targets; the previous layer's depth
   GLint u_clip_ = -1, u_encode8_ = -1, u_max_speed_ = -1, u_peel_ = -1;
-  std::vector<float> previous_depth_;  // the previous layer's z-buffer values, laid out as the target
   int size_ = 0;
   int views_ = 2;
   bool float_ = true;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "clothbench/collide_is/device_maps.hpp"
 #include "clothbench/sim/timer.hpp"
 
 namespace clothbench {
@@ -18,6 +19,24 @@ ImageSpaceCollider::ImageSpaceCollider(std::unique_ptr<MapRenderer> renderer, co
   check_view_options(options);
   if (!(options.max_speed > 0)) throw std::invalid_argument("ImageSpaceCollider: max_speed must be > 0");
   stats_.setup_ms = setup_ms;
+  device_ = renderer_->device_maps();
+}
+
+const MapSet& ImageSpaceCollider::maps() const {
+  if (!device_) return maps_;
+  if (!copied_ && vertex_count_ > 0) device_->copy(slot_, copy_);
+  copied_ = true;
+  return copy_;
+}
+
+void ImageSpaceCollider::draw(const BodyFrame& body, MapSet& maps, int slot) {
+  if (!device_) {
+    render_maps_into(body, *renderer_, options_, maps, region_);
+    return;
+  }
+  shape_maps(body, options_, maps, region_);
+  device_->draw(body, maps, side_layer_rings(options_, maps.frame.pixel), slot);
+  if (slot == slot_) copied_ = false;
 }
 
 std::string_view ImageSpaceCollider::name() const {
@@ -30,7 +49,7 @@ std::string ImageSpaceCollider::device() const { return renderer_->device(); }
 void ImageSpaceCollider::set_body(const BodyFrame& body) {
   validate_body(body, std::string(name()) + " set_body");
   Stopwatch watch;
-  render_maps_into(body, *renderer_, options_, maps_, region_);
+  draw(body, maps_, slot_);
   vertex_count_ = body.vertex_count();
   prepared_ = false;
   stats_.setup_ms += watch.ms();
@@ -47,7 +66,7 @@ bool ImageSpaceCollider::prepare_body(const BodyFrame& body) {
   // a static body keeps the maps of set_body
   if (!body.moving && !maps_.has_velocity) return false;
   Stopwatch watch;
-  render_maps_into(body, *renderer_, options_, next_, region_);
+  draw(body, next_, 1 - slot_);
   prepared_ = true;
   prepared_ms_ = watch.ms();
   return true;
@@ -58,6 +77,8 @@ void ImageSpaceCollider::update_body(const BodyFrame& body) {
   ++stats_.updates;
   if (prepared_) {
     std::swap(maps_, next_);
+    slot_ = 1 - slot_;
+    copied_ = false;
     prepared_ = false;
     stats_.update_ms += prepared_ms_;
     return;
@@ -65,7 +86,7 @@ void ImageSpaceCollider::update_body(const BodyFrame& body) {
   // a static body keeps the maps of set_body
   if (!body.moving && !maps_.has_velocity) return;
   Stopwatch watch;
-  render_maps_into(body, *renderer_, options_, maps_, region_);
+  draw(body, maps_, slot_);
   stats_.update_ms += watch.ms();
 }
 
@@ -253,16 +274,22 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
 void ImageSpaceCollider::query(PointsView points, ContactsOut out) {
   Stopwatch watch;
   std::int64_t hits = 0, degenerate = 0;
+  if (device_ && vertex_count_ > 0) device_->query(slot_, points, test_, rule_, options_.tol, out.data);
   for (std::size_t k = 0; k < points.count; ++k) {
     Contact& c = out[k];
-    c = Contact{};
     const Vec3 p = points[k];
     // NaN or infinite points cannot be answered
     if (!p.allFinite()) {
       ++degenerate;
+      c = Contact{};
       c.depth = std::numeric_limits<float>::infinity();
       continue;
     }
+    if (device_ && vertex_count_ > 0) {
+      hits += c.hit;
+      continue;
+    }
+    c = Contact{};
     hits += answer(p, c);
   }
   stats_.query_ms += watch.ms();

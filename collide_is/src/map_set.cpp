@@ -100,11 +100,17 @@ std::array<float, 16> clip_from_world(const MapFrame& f, int view) {
   return m;
 }
 
-void MapSet::reset(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv) {
+void MapSet::set_shape(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv) {
   frame = new_frame;
   float_maps = floats;
   has_velocity = with_velocity;
   max_speed = maxv;
+  row_first.fill(0);
+  row_last.fill(new_frame.size - 1);
+}
+
+void MapSet::reset(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv) {
+  set_shape(new_frame, floats, with_velocity, maxv);
   const std::size_t n = view_pixels();
   const float inf = std::numeric_limits<float>::infinity();
   const std::size_t views = static_cast<std::size_t>(new_frame.map_count());
@@ -119,8 +125,6 @@ void MapSet::reset(const MapFrame& new_frame, bool floats, bool with_velocity, R
   normal8.resize(floats ? 0 : 4 * views * n);
   velocity.resize(floats && with_velocity ? 4 * views * n : 0);
   velocity8.resize(!floats && with_velocity ? 4 * views * n : 0);
-  row_first.fill(0);
-  row_last.fill(new_frame.size - 1);
 }
 
 void MapSet::limit_rows(const Box3& region) {
@@ -259,6 +263,12 @@ MapSet render_maps(const BodyFrame& body, MapRenderer& renderer, const ColliderO
   MapSet maps;
   render_maps_into(body, renderer, options, maps);
   return maps;
+}
+
+void shape_maps(const BodyFrame& body, const ColliderOptions& options, MapSet& maps, const std::optional<Box3>& rows) {
+  maps.set_shape(make_map_frame(bounding_box(body.positions), options), options.float_maps, body.moving,
+                 options.max_speed);
+  if (rows) maps.limit_rows(*rows);
 }
 
 void render_maps_into(const BodyFrame& body, MapRenderer& renderer, const ColliderOptions& options, MapSet& maps,

@@ -7,7 +7,7 @@
 # Writes OUTDIR/run.log (everything printed) and OUTDIR/gpu-results.tar.gz (every result file, repacked
 # after each step, so a run cut short still returns what it finished).
 # For a quick trial: WALKING="skirt:672" BENCH_FILTER='^render/(egl|cpu)/float/320$' REPETITIONS=1 (and
-# VARIANTS, default "stable ahead papers-ahead": the walking runs' variants, step 3).
+# VARIANTS, default "stable ahead papers-ahead": the walking runs' variants, step 3; GL_TIMER=0 skips step 5).
 set -uo pipefail
 TARBALL=${1:?usage: run-on-gpu.sh TARBALL OUTDIR}
 OUTDIR=${2:?usage: run-on-gpu.sh TARBALL OUTDIR}
@@ -36,7 +36,8 @@ src=$(sed -n 's/^source_dir: //p' "$B/BUILD-INFO")
 if [ -n "$src" ] && [ ! -e "$src/scenes" ]; then mkdir -p "$(dirname "$src")" && ln -sfn "$REPO" "$src"; fi
 WALKING=${WALKING-skirt:672 dress_sleeves:2300}
 VARIANTS=${VARIANTS-stable ahead papers-ahead}
-BENCH_FILTER=${BENCH_FILTER:-^render/(egl|cpu)/}
+BENCH_FILTER=${BENCH_FILTER:-^(render|query)/(egl|cpu)/}
+GL_TIMER=${GL_TIMER-1}
 REPETITIONS=${REPETITIONS:-3}
 CB=$B/bin/clothbench
 BODY=$REPO/scenes/data/body/mh_female_walk.glb
@@ -85,11 +86,12 @@ step maps maps 2>&1 | tee "$R/maps.txt"
 python3 "$HERE/compare_maps.py" "$R/maps" > "$R/maps-compare.json" 2> "$R/maps-compare.err" || cat "$R/maps-compare.err"
 pack
 
-# 4 (cheap, so early). the EGL tests: EGL against the CPU rasteriser, bit for bit (OSMesa comparisons skip here)
-step tests "$B/bin/collide_is_tests" --gtest_filter='EglMaps.*:ImageSpaceAccuracy.Egl*' \
+# 4 (cheap, so early). the EGL tests: EGL against the CPU rasteriser, bit for bit (OSMesa comparisons skip here),
+# and the answers of the maps kept on the device against the CPU's from the same maps
+step tests "$B/bin/collide_is_tests" --gtest_filter='EglMaps.*:ImageSpaceAccuracy.Egl*:EglQueries.*' \
   --gtest_output=json:"$R/collide_is_tests.json" 2>&1 | tee "$R/collide_is_tests.txt"
 
-# 2. map rendering per renderer and size (`make bench-gpu`; GL rows need OSMesa, not in this build)
+# 2. map rendering per renderer and size, and query batches (`make bench-gpu`; GL rows need OSMesa, not in this build)
 step map-render "$B/bin/collide_is_bench" --benchmark_filter="$BENCH_FILTER" --benchmark_repetitions=$REPETITIONS \
   --benchmark_out="$R/map-render.json" --benchmark_out_format=json 2>&1 | tee "$R/map-render.txt"
 
@@ -126,5 +128,5 @@ gl_timer() {
       --quiet --json "$R/gl-timer-walking-$g-is-egl.json" || return
   done
 }
-step gl-timer gl_timer 2>&1 | tee "$R/gl-timer.txt"
+[ "$GL_TIMER" = 0 ] || step gl-timer gl_timer 2>&1 | tee "$R/gl-timer.txt"
 echo "=== done"; cat "$R/exit-codes.txt"; pack

@@ -25,14 +25,19 @@ class GlContext {
   virtual std::string renderer_name() const = 0;
   /// How the context was made, for the device string ("OSMesa", "EGL device 0 (EGL_MESA_device_software)").
   virtual std::string provider() const = 0;
+  /// Whether the context offers OpenGL 4.3 (compute shaders, shader storage) and the renderer keeps its maps on
+  /// the device, answering queries there (DeviceMaps).
+  virtual bool compute() const { return false; }
 };
 
 /// The OpenGL map renderer on `context` (made current at construction and before every render, released after
 /// it, so that renders may come from any thread, one at a time): one FBO with
 /// two colour targets (normal, velocity; RGBA32F or RGBA8) and a depth target of size x (views x size), the
 /// views stacked upwards, peeled layers drawn again with a shader discarding what is not beyond the last,
-/// read back with glReadPixels. Its device() names the provider, GL_VENDOR and GL_RENDERER. Throws
-/// std::runtime_error when a function is missing or a shader does not compile.
+/// read back with glReadPixels; on a context whose compute() is true, kept on the device instead (device_maps():
+/// compute shaders turn each pass into maps, grow the side layer and answer queries; render() copies them out).
+/// Its device() names the provider, GL_VENDOR and GL_RENDERER. Throws std::runtime_error when a function is
+/// missing or a shader does not compile.
 std::unique_ptr<MapRenderer> make_gl_map_renderer(std::unique_ptr<GlContext> context);
 
 }  // namespace clothbench

@@ -62,7 +62,8 @@ std::unique_ptr<Collider> make_is_cpu_collider(const ColliderOptions& options);
 DepthTest image_space_depth_test(const ColliderOptions& options);
 
 /// The collider over an explicit renderer ("gl", "egl" or "cpu"); the MapSet stays readable for
-/// pictures and tests through maps().
+/// pictures and tests through maps(). Where the renderer keeps its maps on its device (MapRenderer::device_maps(),
+/// is-egl), they stay there and answer the queries there, the same answers by the same rules.
 class ImageSpaceCollider final : public Collider {
  public:
   /// `setup_ms`: set-up already spent on the renderer (GL context, shaders) [ms].
@@ -82,15 +83,21 @@ class ImageSpaceCollider final : public Collider {
   void set_query_region(const Box3& region) override { region_ = region; }
   void query(PointsView points, ContactsOut out) override;
   CollideStats stats() const override { return stats_; }
-  /// The current maps (empty before set_body).
-  const MapSet& maps() const { return maps_; }
+  /// The current maps (empty before set_body); a renderer's maps kept on its device are copied out for this.
+  const MapSet& maps() const;
 
  private:
   void check_update(const BodyFrame& body) const;
+  // draws `body` into `maps` (on the device: into its map set `slot`, `maps` taking only their shape)
+  void draw(const BodyFrame& body, MapSet& maps, int slot);
   // one point's contact; true on a hit
   bool answer(const Vec3& p, Contact& c) const;
 
   std::unique_ptr<MapRenderer> renderer_;
+  DeviceMaps* device_ = nullptr;  // the renderer's maps kept on its device (is-egl), which then answer queries
+  int slot_ = 0;                  // device_: the map set of the current maps (next_'s is the other)
+  mutable MapSet copy_;           // device_: the current maps copied out, for maps()
+  mutable bool copied_ = false;
   ColliderOptions options_;
   DepthTest test_;
   ViewRule rule_;

@@ -17,6 +17,8 @@
 
 namespace clothbench {
 
+class DeviceMaps;
+
 /// The two orthographic cameras of walking paper section 4, both looking at the centre of the
 /// body's bounding box: the front camera sits on the box's +Z face and looks along -Z, the back
 /// camera on the -Z face looks along +Z. Both see the same square of the x-y plane.
@@ -152,6 +154,9 @@ struct MapSet {
   }
   /// Sizes every array for `frame` and the encoding, clearing z to +-inf and the mask to kEmpty; every row drawn.
   void reset(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv);
+  /// Frame, encoding and rows as reset() sets them, the arrays untouched: the shape of maps drawn elsewhere
+  /// (DeviceMaps).
+  void set_shape(const MapFrame& new_frame, bool floats, bool with_velocity, Real maxv);
   /// Draws only the rows of each view that `region` spans (each view's row axis, a pixel more each way): the
   /// maps are then the full maps in those rows and empty in the others (a region that misses a view leaves it
   /// empty). For a caller whose queries all come from within `region` (ImageSpaceCollider::set_query_region).
@@ -193,6 +198,8 @@ class MapRenderer {
   /// an OpenGL context that another thread holds (std::runtime_error).
   /// Any thread may call it, one at a time.
   virtual void render(const BodyFrame& body, MapSet& maps) = 0;
+  /// The renderer's maps kept on its device, answering points there; null where the maps live on the CPU.
+  virtual DeviceMaps* device_maps() { return nullptr; }
 };
 
 /// Whether a MapRenderer::device() names a renderer on the CPU (Mesa's llvmpipe, our rasteriser), not a GPU.
@@ -223,5 +230,8 @@ MapSet render_maps(const BodyFrame& body, MapRenderer& renderer, const ColliderO
 /// `rows` spans when given (MapSet::limit_rows), then the side layer. The body is not validated here.
 void render_maps_into(const BodyFrame& body, MapRenderer& renderer, const ColliderOptions& options, MapSet& maps,
                       const std::optional<Box3>& rows = std::nullopt);
+/// The shape render_maps_into gives `maps` (frame, encoding, rows; MapSet::set_shape), the arrays untouched.
+void shape_maps(const BodyFrame& body, const ColliderOptions& options, MapSet& maps,
+                const std::optional<Box3>& rows = std::nullopt);
 
 }  // namespace clothbench
