@@ -4,12 +4,14 @@
 // dress's 2,300 points (is-egl: answered on its device, the batch's upload and read-back included).
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <memory>
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "clothbench/collide_is/image_space_collider.hpp"
@@ -55,8 +57,17 @@ std::unique_ptr<MapRenderer> make_renderer(const std::string& name) {
 }
 
 // one frame's maps as update_body renders them: reset, both views, side layer
+Points3 near_surface_points(const BodyFrame& body, int count);
+
+// a walking frame's work without the cloth: the maps, then `batches` query batches of 2,300 points (the walking
+// dress's), or an idle pause of `idle_ms` (a device left idle between frames may clock down)
+struct FrameLoad {
+  int batches = 0;
+  int idle_ms = 0;
+};
+
 void bm_render(benchmark::State& state, const std::string& renderer, bool float_maps, int size, int views = 2,
-               int layers = 1) {
+               int layers = 1, FrameLoad load = {}) {
   ColliderOptions o;
   o.map_size = size;
   o.float_maps = float_maps;
@@ -70,9 +81,16 @@ void bm_render(benchmark::State& state, const std::string& renderer, bool float_
     state.SkipWithError(e.what());
     return;
   }
-  for (auto _ : state) c->update_body(bench_body().frame);
+  const Points3 points = near_surface_points(bench_body().frame, 2300);
+  std::vector<Contact> out(static_cast<std::size_t>(points.cols()));
+  for (auto _ : state) {
+    c->update_body(bench_body().frame);
+    for (int b = 0; b < load.batches; ++b) c->query(PointsView(points), ContactsOut{out.data(), out.size()});
+    if (load.idle_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(load.idle_ms));
+  }
   const CollideStats s = c->stats();
   state.counters["update_ms"] = s.update_ms / static_cast<double>(s.updates);
+  if (s.queries > 0) state.counters["query_batch_ms"] = s.query_ms / static_cast<double>(s.queries);
   state.counters["setup_ms"] = s.setup_ms;
   state.counters["body_triangles"] = bench_body().frame.triangle_count();
   state.SetLabel(c->device());
@@ -130,11 +148,15 @@ void register_all() {
             ("render/" + renderer + "/" + (float_maps ? "float" : "8bit") + "/" + std::to_string(size)).c_str(),
             [=](benchmark::State& s) { bm_render(s, renderer, float_maps, size); })
             ->Unit(benchmark::kMillisecond);
-  // the walking dress's maps (walking-t2: 6 views, 5 layers)
+  // the walking dress's maps (walking-t2: 6 views, 5 layers), alone, with a frame's query batches (a walking run
+  // of the stable regime asks about 200 a frame) or after an idle pause
   for (const std::string renderer : {"gl", "egl", "cpu"})
-    benchmark::RegisterBenchmark(("render/" + renderer + "/float/320/6views5layers").c_str(),
-                                 [=](benchmark::State& s) { bm_render(s, renderer, true, 320, 6, 5); })
-        ->Unit(benchmark::kMillisecond);
+    for (const FrameLoad load : {FrameLoad{}, FrameLoad{200, 0}, FrameLoad{0, 50}}) {
+      const std::string suffix = load.batches ? "/200batches" : load.idle_ms ? "/idle50ms" : "";
+      benchmark::RegisterBenchmark(("render/" + renderer + "/float/320/6views5layers" + suffix).c_str(),
+                                   [=](benchmark::State& s) { bm_render(s, renderer, true, 320, 6, 5, load); })
+          ->Unit(benchmark::kMillisecond);
+    }
   for (const bool float_maps : {true, false})
     for (const DepthTest test : {DepthTest::kPapers, DepthTest::kTangentPlane})
       benchmark::RegisterBenchmark(("query/" + std::string(float_maps ? "float" : "8bit") + "/" +

@@ -7,7 +7,8 @@
 # Writes OUTDIR/run.log (everything printed) and OUTDIR/gpu-results.tar.gz (every result file, repacked
 # after each step, so a run cut short still returns what it finished).
 # For a quick trial: WALKING="skirt:672" BENCH_FILTER='^render/(egl|cpu)/float/320$' REPETITIONS=1 (and
-# VARIANTS, default "stable ahead papers-ahead": the walking runs' variants, step 3; GL_TIMER=0 skips step 5).
+# VARIANTS, default "stable ahead papers-ahead": the walking runs' variants, step 3; COLLIDERS, default
+# "is-egl is-cpu": theirs; GL_TIMER=0 skips step 5).
 set -uo pipefail
 TARBALL=${1:?usage: run-on-gpu.sh TARBALL OUTDIR}
 OUTDIR=${2:?usage: run-on-gpu.sh TARBALL OUTDIR}
@@ -36,6 +37,7 @@ src=$(sed -n 's/^source_dir: //p' "$B/BUILD-INFO")
 if [ -n "$src" ] && [ ! -e "$src/scenes" ]; then mkdir -p "$(dirname "$src")" && ln -sfn "$REPO" "$src"; fi
 WALKING=${WALKING-skirt:672 dress_sleeves:2300}
 VARIANTS=${VARIANTS-stable ahead papers-ahead}
+COLLIDERS=${COLLIDERS-is-egl is-cpu}
 BENCH_FILTER=${BENCH_FILTER:-^(render|query)/(egl|cpu)/}
 GL_TIMER=${GL_TIMER-1}
 REPETITIONS=${REPETITIONS:-3}
@@ -107,7 +109,7 @@ variant_sets() {
       --set body.prepare_ahead=true ;;
   esac
 }
-for gv in $WALKING; do for v in $VARIANTS; do for c in is-egl is-cpu; do
+for gv in $WALKING; do for v in $VARIANTS; do for c in $COLLIDERS; do
   g=${gv%:*}; n=walking-$g-$c; [ $v = stable ] || n=$n-$v
   step $n "$CB" run "$REPO/scenes/walking/$g.toml" --collider $c --set garment.vertices=${gv#*:} $(variant_sets $v) \
     --every-frame --quiet --json "$R/$n.json" 2>&1 | tee "$R/$n.txt"
