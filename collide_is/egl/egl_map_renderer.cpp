@@ -35,6 +35,7 @@ bool has_extension(const char* list, const std::string& name) {
 struct Made {
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
+  EGLContext second = EGL_NO_CONTEXT;  // shares the first's objects: drawing on one thread, answering on another
 };
 
 bool make_context(EGLDisplay display, Made& out, std::string& why) {
@@ -76,7 +77,7 @@ bool make_context(EGLDisplay display, Made& out, std::string& why) {
     why = "eglMakeCurrent without a surface failed";
     return false;
   }
-  out = {display, context};
+  out = {display, context, eglCreateContext(display, config, context, attributes.data())};
   return true;
 }
 
@@ -110,12 +111,16 @@ class EglGlContext final : public GlContext {
 
   ~EglGlContext() override {
     eglMakeCurrent(made_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(made_.display, made_.context);  // the display stays initialised: other contexts share it
+    // the display stays initialised: other renderers' contexts share it
+    if (made_.second != EGL_NO_CONTEXT) eglDestroyContext(made_.display, made_.second);
+    eglDestroyContext(made_.display, made_.context);
   }
 
-  bool make_current() override {
-    return eglMakeCurrent(made_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, made_.context) == EGL_TRUE;
+  bool make_current(int k) override {
+    const EGLContext c = k == 1 && made_.second != EGL_NO_CONTEXT ? made_.second : made_.context;
+    return eglMakeCurrent(made_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, c) == EGL_TRUE;
   }
+  int contexts() const override { return made_.second != EGL_NO_CONTEXT ? 2 : 1; }
   void release() override { eglMakeCurrent(made_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
   void* proc(const char* name) override { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
   std::string renderer_name() const override { return "egl"; }

@@ -64,7 +64,7 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
  public:
   explicit GlMapRenderer(std::unique_ptr<GlContext> context)
       : context_(std::move(context)), who_("is-" + context_->renderer_name()), name_(context_->renderer_name()) {
-    if (!context_->make_current()) throw std::runtime_error(who_ + ": the OpenGL context cannot be made current");
+    make_current(Role::kDraw);
     gl_ = GlApi::load([this](const char* f) { return context_->proc(f); }, who_, context_->compute());
     set_up();
     if (context_->compute()) compute_ = std::make_unique<GlComputeMaps>(gl_, who_);
@@ -72,7 +72,7 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
   }
 
   ~GlMapRenderer() override {
-    context_->make_current();
+    context_->make_current(context_index(Role::kDraw));
     if (compute_) compute_->release();
     release_targets();
     gl_.DeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
@@ -92,13 +92,13 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
       copy(0, maps);
       return;
     }
-    const Current current(*this);
+    const Current current(*this, Role::kDraw);
     passes(body, maps, [&](int view, int map) { read_back(maps, view, map); });
     depth_from_zbuffer(maps);
   }
 
   void draw(const BodyFrame& body, const MapSet& shape, int rings, int slot) override {
-    const Current current(*this);
+    const Current current(*this, Role::kDraw);
     compute_->begin(slot, shape);
     passes(body, shape, [&](int view, int map) { compute_->resolve(slot, view, map, tex_[0], tex_[1]); });
     compute_->side_layer(slot, rings);
@@ -106,27 +106,42 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
   }
 
   void query(int slot, PointsView points, DepthTest test, ViewRule rule, Real tol, Contact* out) override {
-    const Current current(*this);
+    const Current current(*this, Role::kAnswer);
     compute_->query(slot, points, test, rule, tol, out);
   }
 
   void copy(int slot, MapSet& maps) override {
-    const Current current(*this);
+    const Current current(*this, Role::kAnswer);
     compute_->copy(slot, maps);
   }
 
  private:
-  // the context current on the calling thread for one call (one thread at a time), released after it
+  // What a call does: draw (targets, vertex arrays, a map set's buffers) or answer from a map set (queries, copies).
+  // With two contexts (GlContext::contexts()) each role has its own, so a map set may be drawn on one thread while
+  // another answers from the other set; the answering context stays current on its thread between calls (a
+  // context released and made current again costs more than a query batch), the drawing one is released after
+  // each call, so any thread may draw next. With one context both roles take turns on it, released after each call.
+  enum class Role { kDraw, kAnswer };
+  int context_index(Role role) const { return context_->contexts() == 2 && role == Role::kDraw ? 1 : 0; }
+  bool kept(Role role) const { return context_->contexts() == 2 && role == Role::kAnswer; }
+
+  // the role's context current on the calling thread for one call (one call per role at a time)
   class Current {
    public:
-    explicit Current(GlMapRenderer& r) : r_(r), lock_(r.mutex_) { r_.make_current(); }
-    ~Current() { r_.context_->release(); }
+    Current(GlMapRenderer& r, Role role)
+        : r_(r), lock_(r.kept(role) ? r.answer_mutex_ : r.draw_mutex_), keep_(r.kept(role)) {
+      r_.make_current(role);
+    }
+    ~Current() {
+      if (!keep_) r_.context_->release();
+    }
     Current(const Current&) = delete;
     Current& operator=(const Current&) = delete;
 
    private:
     GlMapRenderer& r_;
     std::lock_guard<std::mutex> lock_;
+    bool keep_;
   };
 
   // every view, then every peeled layer of the even views, each pass handed to `keep` (view, map) while its
@@ -166,8 +181,12 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
     device_ = context_->provider() + ": " + text(GL_VENDOR) + " " + text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
   }
 
-  void make_current() {
-    if (!context_->make_current()) throw std::runtime_error(who_ + ": the OpenGL context cannot be made current");
+  void make_current(Role role) {
+    if (!context_->make_current(context_index(role)))
+      throw std::runtime_error(who_ + ": the OpenGL context cannot be made current (" +
+                               (kept(role) ? "queries come from one thread: another holds the answering context"
+                                           : "the provider refused") +
+                               ")");
   }
 
   GLuint compile(GLenum type, const char* source) {
@@ -345,7 +364,7 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
   std::string who_, name_, device_;
   GlApi gl_;
   std::unique_ptr<GlComputeMaps> compute_;  // OpenGL 4.3 contexts: the maps kept on the device
-  std::mutex mutex_;                        // one call at a time holds the context
+  std::mutex draw_mutex_, answer_mutex_;    // one call per role at a time (Current)
   GLuint program_ = 0, vao_ = 0, fbo_ = 0;
   std::array<GLuint, 4> vbo_{};  // positions, normals, velocities, indices
   std::array<GLuint, 4> tex_{};  // normal, velocity, depth targets; the previous layer's depth

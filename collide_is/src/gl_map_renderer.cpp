@@ -11,7 +11,7 @@ namespace {
 class OsmesaGlContext final : public GlContext {
  public:
   OsmesaGlContext() : context_("is-gl") {}
-  bool make_current() override { return context_.make_current(); }
+  bool make_current(int /*k*/) override { return context_.make_current(); }
   void release() override { osmesa::Context::release(); }
   void* proc(const char* name) override { return osmesa::proc_address(name); }
   std::string renderer_name() const override { return "gl"; }

@@ -15,10 +15,14 @@ class GlContext {
   GlContext(const GlContext&) = delete;
   GlContext& operator=(const GlContext&) = delete;
   virtual ~GlContext() = default;
-  /// Makes this context current on the calling thread; false when the provider refuses.
-  virtual bool make_current() = 0;
-  /// Makes no context current on the calling thread, so that another thread may make this one current next.
+  /// Makes context `k` current on the calling thread; false when the provider refuses. k is 0, or 1 where
+  /// contexts() is 2.
+  virtual bool make_current(int k = 0) = 0;
+  /// Makes no context current on the calling thread, so that another thread may make the one it held current next.
   virtual void release() = 0;
+  /// 2 where the provider made a second context sharing the first's objects (buffers, textures, programs), so
+  /// that drawing (context 1) and answering (context 0) may run on two threads at once; else 1.
+  virtual int contexts() const { return 1; }
   /// The address of OpenGL function `name` ("glDrawElements") from this context's provider, or null.
   virtual void* proc(const char* name) = 0;
   /// The renderer's name ("gl", "egl"); its errors are reported as "is-" + the name.
