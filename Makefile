@@ -38,7 +38,8 @@ perf-baseline: build
 	python3 perf/measure.py --workloads $(BUILD)/bin/clothbench_perf_workloads accept --baseline results/ci-baseline.json
 
 # the GPU-relevant benchmarks in one command, for a machine with a GPU (README.md, "On a GPU"): map rendering per
-# renderer (OSMesa, EGL, CPU) at 320^2 / 512^2 / 1024^2, and both walking garments of walking-t2 (skirt 672 v,
+# renderer (OSMesa, EGL, CPU) at 320^2 / 512^2 / 1024^2 and the walking dress's 6 views x 5 layers, query batches
+# (CPU, and is-egl on its device), and both walking garments of walking-t2 (skirt 672 v,
 # dress with sleeves 2,300 v) with is-egl and is-cpu (every frame measured), each also with the next frame prepared
 # on a second thread (body.prepare_ahead, -ahead.json), as JSON in $(BUILD)/bench-gpu/; each row names its device. CLOTHBENCH_EGL_DEVICE=N
 # picks EGL device N (default: the first that is not Mesa's software device)
@@ -46,7 +47,7 @@ BENCH_GPU := $(BUILD)/bench-gpu
 bench-gpu: build
 	mkdir -p $(BENCH_GPU)
 	$(BUILD)/bin/clothbench maps $(CURDIR)/scenes/data/body/mh_female_walk.glb --renderer egl --png $(BENCH_GPU)/maps
-	$(BUILD)/bin/collide_is_bench --benchmark_filter='^render/' --benchmark_repetitions=3 \
+	$(BUILD)/bin/collide_is_bench --benchmark_filter='^(render|query)/' --benchmark_repetitions=3 \
 	  --benchmark_out=$(BENCH_GPU)/map-render.json --benchmark_out_format=json
 	for gv in skirt:672 dress_sleeves:2300; do for c in is-egl is-cpu; do for a in false true; do g=$${gv%:*}; \
 	  $(BUILD)/bin/clothbench run scenes/walking/$$g.toml --collider $$c --set garment.vertices=$${gv#*:} \

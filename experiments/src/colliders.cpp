@@ -214,16 +214,18 @@ std::string renderer_table(ExperimentContext& ctx) {
     t.row(row);
   }
   std::ostringstream out;
-  out << "## Map renderers\n\nOne animation frame's maps as `update_body` draws them (depth, normal and velocity of "
-         "every view and peeled layer, read back, the side layer added), mean of "
+  out << "## Map renderers\n\nOne animation frame's maps as `update_body` makes them (depth, normal and velocity of "
+         "every view and peeled layer, and the side layer), mean of "
       << frames << " frames of the walking body (" << a.triangle_count()
       << " triangles) moving between 1 s and 1 s + 1/30 of `walk_07_01`, per renderer: `is-gl` OpenGL in an OSMesa "
-         "context, `is-egl` the same shaders and FBO in a windowless EGL context (`EGL_EXT_platform_device`, else "
-         "Mesa's surfaceless platform), `is-cpu` our CPU rasteriser (the same coverage and depth as llvmpipe). "
+         "context, read back, the side layer added on the CPU; `is-egl` the same shaders and targets in a windowless "
+         "EGL context (`EGL_EXT_platform_device`, else Mesa's surfaceless platform), kept on its device: compute "
+         "shaders turn each pass into maps and grow the side layer there, nothing read back; `is-cpu` our CPU "
+         "rasteriser (the same coverage and depth as llvmpipe). "
       << (software ? "**These timings were taken without a GPU**: EGL found only Mesa's software device, so `is-egl` "
-                     "draws with the same llvmpipe as `is-gl`, and the two give bit-identical maps "
-                     "(tests/collide_is/egl_test.cpp); on a machine with a GPU `is-egl` draws there (README.md, *On a "
-                     "GPU*). "
+                     "draws with the same llvmpipe as `is-gl` (bit-identical maps, tests/collide_is/egl_test.cpp) and "
+                     "its compute shaders run on the CPU too; on a machine with a GPU `is-egl` draws and answers "
+                     "there (README.md, *On a GPU*). "
                    : "`is-egl` drew on the GPU named below. ")
       << "Devices:\n\n"
       << devices << "\n"

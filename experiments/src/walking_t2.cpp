@@ -84,7 +84,8 @@ struct WalkVariant {
 // stable and papers' regimes with every collider on walk_07_01, stable on walk_08_02 with image space and the
 // fastest exact collider, then the ablations (is-cpu) and the travelling body (is-cpu and embree)
 std::vector<WalkVariant> walk_variants() {
-  const std::vector<std::string> all{"is-gl", "is-cpu", "fcl", "embree", "bbtree"}, some{"is-gl", "is-cpu", "embree"};
+  const std::vector<std::string> all{"is-gl", "is-egl", "is-cpu", "fcl", "embree", "bbtree"},
+      some{"is-gl", "is-egl", "is-cpu", "embree"};
   std::vector<WalkVariant> v;
   v.push_back({"stable", "walk_07_01", "stable", "", {}, all});
   // vdb voxelises the skinned body again every frame (seconds each): half a second of walking only

@@ -4,9 +4,10 @@
 
   python3 tools/gpu-bundle/make_tables.py results/gpu-h100
 
-Reads DIR/raw/: map-render.json (collide_is_bench), walking-*.json and .txt (clothbench run, three variants;
-the worst frame of --every-frame from the JSON, or from the text where an older JSON lacks it), gl-timer.jsonl
-with gl-timer-*.json (the runs with gl_timer.c preloaded), collide_is_tests.txt and maps-compare.json.
+Reads DIR/raw/: map-render.json (collide_is_bench), walking-*.json and .txt (clothbench run, three variants, every
+collider the run had; the worst frame of --every-frame from the JSON, or from the text where an older JSON lacks
+it), gl-timer.jsonl with gl-timer-*.json (the runs with gl_timer.c preloaded; columns left empty without them),
+collide_is_tests.txt and maps-compare.json.
 Standard library only.
 """
 import json
@@ -19,24 +20,36 @@ def bench_rows(path):
     return json.loads(path.read_text())["benchmarks"]
 
 
+def median_row(rows, name):
+    found = [r for r in rows if r["name"] == name + "_median"]
+    return found[0] if found else None
+
+
 def median_ms(rows, name):
-    (row,) = [r for r in rows if r["name"] == name + "_median"]
-    return row["real_time"]
+    row = median_row(rows, name)
+    return row["real_time"] if row else float("nan")
+
+
+COLLIDERS = ("is-egl", "is-cpu", "is-gl", "embree", "fcl", "bbtree", "vdb")
 
 
 def main():
     d = Path(sys.argv[1])
     raw = d / "raw"
     out = []
-    timer = {j["label"]: j for j in map(json.loads, (raw / "gl-timer.jsonl").read_text().splitlines())}
+    timer_log = raw / "gl-timer.jsonl"
+    timer = ({j["label"]: j for j in map(json.loads, timer_log.read_text().splitlines())}
+             if timer_log.exists() else {})
 
     rows = bench_rows(raw / "map-render.json")
     egl_device = next(r["label"] for r in rows if r["name"].startswith("render/egl/") and "label" in r)
     out += ["## Map rendering: one frame's maps (collide_is_bench `render/`)", "",
             "The walking body at 2 s of walk_07_01 (26,756 triangles), 2 views x 1 layer, depth + normal + velocity "
-            "drawn, read back and the side layer added (`update_body`). is-egl, is-cpu: median of 3 repetitions "
-            "[ms/frame]. glReadPixels: the same benchmark run once more with gl_timer.c preloaded (its own frame time "
-            "in brackets); its time is the wait for the GPU's drawing plus the copy to the CPU.", "",
+            "and the side layer, as `update_body` makes them (is-gl and is-cpu: drawn, read back, the side layer added on "
+            "the CPU; is-egl as its commit does: the same before its maps stayed on the device, after that drawn, turned "
+            "into maps and the side layer grown there, nothing read back). Median of the repetitions [ms/frame]; - where the run had none. "
+            "glReadPixels: the same benchmark run once more with gl_timer.c preloaded (its own frame time in brackets; "
+            "empty where the run did not time it); its time is the wait for the GPU's drawing plus the copy to the CPU.", "",
             f"is-egl device: {egl_device}", "",
             "| size | encoding | is-egl [ms] | is-cpu [ms] | is-cpu / is-egl | read back [MB/frame] "
             "| glReadPixels [ms/frame] (timed run's frame) | glReadPixels share | read-back rate [GB/s] |",
@@ -45,12 +58,39 @@ def main():
         for size in (320, 512, 1024):
             egl = median_ms(rows, f"render/egl/{enc}/{size}")
             cpu = median_ms(rows, f"render/cpu/{enc}/{size}")
-            t = timer[f"render/egl/{enc}/{size}"]
+            t = timer.get(f"render/egl/{enc}/{size}")
+            if not t:
+                f = lambda x: "-" if x != x else f"{x:.2f}"  # NaN: not run
+                out.append(f"| {size}^2 | {enc} | {f(egl)} | {f(cpu)} | {f(cpu / egl)} | | | | |")
+                continue
             (timed,) = bench_rows(raw / f"gl-timer-render-egl-{enc}-{size}.json")
             rp = t["glReadPixels"]["ms_per_frame"]
             mb = t["read_bytes_per_frame"] / 1e6
             out.append(f"| {size}^2 | {enc} | {egl:.2f} | {cpu:.2f} | {cpu / egl:.2f} | {mb:.1f} | {rp:.2f} "
                        f"({timed['real_time']:.2f}) | {100 * rp / timed['real_time']:.0f} % | {mb / rp:.1f} |")
+
+    # the walking dress's maps under a frame's load, and query batches (benchmarks the bundle may lack)
+    dress = [(f"render/{r}/float/320/6views5layers{load}", r, what) for r in ("egl", "cpu")
+             for load, what in (("", "alone, back to back"), ("/200batches", "after 200 query batches of 2,300 points"),
+                                ("/idle50ms", "after 50 ms idle"))]
+    dress = [(n, r, w, median_row(rows, n)) for n, r, w in dress if median_row(rows, n)]
+    if dress:
+        out += ["", "## The walking dress's maps (6 views x 5 layers, 320^2, float) and query batches", "",
+                "collide_is_bench, median of the repetitions: `update_body` per frame [ms] as it follows what a "
+                "walking frame does between two updates; query batches of N points within 3 cm of the surface, "
+                "[us per batch] (is-egl: the points' upload, the compute shader and the answers' read-back).", "",
+                "| renderer | maps | maps [ms/frame] | query batch [ms] |", "|---|---|---|---|"]
+        for n, r, w, row in dress:
+            q = row.get("query_batch_ms")
+            out.append(f"| {r} | {w} | {row['update_ms']:.2f} | {'' if q is None else f'{q:.3f}'} |")
+        out += ["", "| renderer | points | views x layers | batch [us] | per point [ns] |", "|---|---|---|---|---|"]
+        for r in ("egl", "cpu"):
+            for count in (2300, 10000):
+                for suffix, vl in (("", "2 x 1"), ("/6views5layers", "6 x 5")):
+                    row = median_row(rows, f"query/{r}/float/tangent_plane/{count}pts{suffix}")
+                    if row:
+                        out.append(f"| {r} | {count} | {vl} | {row['real_time']:.1f} "
+                                   f"| {1e3 * row['real_time'] / count:.1f} |")
 
     out += ["", "## Walking (`make bench-gpu`): `clothbench run scenes/walking/G.toml --every-frame`", "",
             "60 frames (1 - 3 s of walk_07_01). Variants: *stable* = the scene as it is (our stable regime); "
@@ -73,7 +113,7 @@ def main():
     variants = (("", "stable"), ("-ahead", "ahead"), ("-papers-ahead", "papers, ahead"))
     for g in ("skirt", "dress_sleeves"):
         for suffix, variant in variants:
-            for c in ("is-egl", "is-cpu"):
+            for c in COLLIDERS:
                 path = raw / f"walking-{g}-{c}{suffix}.json"
                 if not path.exists():
                     continue
@@ -110,7 +150,7 @@ def main():
                 "| garment | variant | collider | frames/s | skinning [ms/frame] | maps [ms/frame] |", "|---|---|---|---|---|---|"]
         for g in ("skirt", "dress_sleeves"):
             for suffix, variant in variants:
-                for c in ("is-egl", "is-cpu"):
+                for c in COLLIDERS:
                     path = check / f"walking-{g}-{c}{suffix}.json"
                     if path.exists():
                         (b,) = bench_rows(path)
