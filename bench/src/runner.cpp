@@ -532,7 +532,7 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   r.window_seam_gap_mm = 1e3 * double(sim.seam_gap_max());
   progress.plan(frames * steps);  // the measured window's collider sets the pace from here
   PhaseClock clock{sim};
-  const double update_before = collider.stats().update_ms;
+  const CollideStats before = collider.stats();
   double not_animation_ms = 0, not_animation_cpu_ms = 0;
   BodyFrame exact_scratch;  // the exact body of a frame, with a collision proxy
   for (long f = 1; f <= frames && alive; ++f) {
@@ -557,7 +557,10 @@ void animate(const Scene& scene, const BodySource& source, Simulator& sim, Colli
   }
   sim.set_collider(&collider);  // the wrappers end here
   r.animate.reached = alive && r.frames == frames;
-  r.collider_update_ms = collider.stats().update_ms - update_before;
+  const CollideStats after = collider.stats();
+  r.collider_update_ms = after.update_ms - before.update_ms;
+  r.collider_queries = after.queries - before.queries;
+  r.collider_query_ms = after.query_ms - before.query_ms;
   clock.finish(r.animate);
   r.animate.wall_ms -= not_animation_ms;
   r.animate.cpu_ms -= not_animation_cpu_ms;

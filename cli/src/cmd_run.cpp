@@ -86,6 +86,10 @@ void print_summary(const RunArgs& a, const RunResult& r) {
         "  %ld frames, %.0f steps per frame, %.2f frames/s (skinning %.2f ms, collider update %.2f ms per frame)\n",
         r.frames, r.steps_per_frame, 1e3 * double(r.frames) / r.animate.wall_ms, r.skinning_ms / double(r.frames),
         r.collider_update_ms / double(r.frames));
+  if (r.frames > 0 && r.collider_queries > 0)
+    std::printf("  collider queries: %.1f batches per frame, %.3f ms each (%s)\n",
+                double(r.collider_queries) / double(r.frames), r.collider_query_ms / double(r.collider_queries),
+                "the points' upload and the answers' read-back included where a device answers");
   if (r.divergence) {
     std::printf("  DIVERGED at iteration %ld (%s), vertex %d: %s\n", r.divergence->iteration,
                 to_string(r.divergence->phase), r.divergence->vertex, r.divergence->reason.c_str());

@@ -8,6 +8,8 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <array>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -64,5 +66,36 @@ struct GlApi {
     return gl;
   }
 };
+
+// a shader of `type` compiled from `source`; throws std::runtime_error "WHO: shader does not compile: LOG"
+inline GLuint compile_shader(const GlApi& gl, GLenum type, const char* source, const std::string& who) {
+  const GLuint s = gl.CreateShader(type);
+  gl.ShaderSource(s, 1, &source, nullptr);
+  gl.CompileShader(s);
+  GLint ok = 0;
+  gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    std::array<char, 4096> log{};
+    gl.GetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    gl.DeleteShader(s);
+    throw std::runtime_error(who + ": shader does not compile: " + log.data());
+  }
+  return s;
+}
+
+// a program of the compiled `shaders` (deleted here, linked or not); throws std::runtime_error when it does not link
+inline GLuint link_shaders(const GlApi& gl, std::initializer_list<GLuint> shaders, const std::string& who) {
+  const GLuint program = gl.CreateProgram();
+  for (GLuint s : shaders) gl.AttachShader(program, s);
+  gl.LinkProgram(program);
+  for (GLuint s : shaders) gl.DeleteShader(s);
+  GLint ok = 0;
+  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    gl.DeleteProgram(program);
+    throw std::runtime_error(who + ": shader program does not link");
+  }
+  return program;
+}
 
 }  // namespace clothbench

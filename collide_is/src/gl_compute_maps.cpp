@@ -313,28 +313,7 @@ void GlComputeMaps::release() {
 
 GLuint GlComputeMaps::program(const char* body) {
   const std::string text = source(body);
-  const char* c = text.c_str();
-  const GLuint s = gl_.CreateShader(GL_COMPUTE_SHADER);
-  gl_.ShaderSource(s, 1, &c, nullptr);
-  gl_.CompileShader(s);
-  GLint ok = 0;
-  gl_.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    std::array<char, 4096> log{};
-    gl_.GetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    gl_.DeleteShader(s);
-    throw std::runtime_error(who_ + ": compute shader does not compile: " + log.data());
-  }
-  const GLuint p = gl_.CreateProgram();
-  gl_.AttachShader(p, s);
-  gl_.LinkProgram(p);
-  gl_.DeleteShader(s);
-  gl_.GetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    gl_.DeleteProgram(p);
-    throw std::runtime_error(who_ + ": compute shader does not link");
-  }
-  return p;
+  return link_shaders(gl_, {compile_shader(gl_, GL_COMPUTE_SHADER, text.c_str(), who_ + " (compute)")}, who_);
 }
 
 void GlComputeMaps::bind(const Slot& s) {

@@ -189,44 +189,17 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
                                ")");
   }
 
-  GLuint compile(GLenum type, const char* source) {
-    const GLuint s = gl_.CreateShader(type);
-    gl_.ShaderSource(s, 1, &source, nullptr);
-    gl_.CompileShader(s);
-    GLint ok = 0;
-    gl_.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-      std::array<char, 2048> log{};
-      gl_.GetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, log.data());
-      gl_.DeleteShader(s);
-      throw std::runtime_error(who_ + ": shader does not compile: " + log.data());
-    }
-    return s;
-  }
-
-  // the two shaders compiled and linked (then deleted)
+  // the two shaders compiled and linked
   GLuint link_program() {
-    const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
+    const GLuint vs = compile_shader(gl_, GL_VERTEX_SHADER, kVertexShader, who_);
     GLuint fs = 0;
     try {
-      fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+      fs = compile_shader(gl_, GL_FRAGMENT_SHADER, kFragmentShader, who_);
     } catch (...) {
       gl_.DeleteShader(vs);
       throw;
     }
-    const GLuint program = gl_.CreateProgram();
-    gl_.AttachShader(program, vs);
-    gl_.AttachShader(program, fs);
-    gl_.LinkProgram(program);
-    gl_.DeleteShader(vs);
-    gl_.DeleteShader(fs);
-    GLint ok = 0;
-    gl_.GetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-      gl_.DeleteProgram(program);
-      throw std::runtime_error(who_ + ": shader program does not link");
-    }
-    return program;
+    return link_shaders(gl_, {vs, fs}, who_);
   }
 
   // (re)creates the FBO when size, view count or encoding changed: size x (views x size), front

@@ -1,7 +1,10 @@
 // run_scene on small scenes: sewing closes, determinism, divergence reported, accuracy from the oracle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "clothbench/bench/body_between_frames.hpp"
+#include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/runner.hpp"
 #include "clothbench/config.h"
@@ -165,6 +168,27 @@ TEST(Runner, FramesPreparedAheadGiveTheSameRun) {
   EXPECT_EQ(1, serial.threads);
   expect_same_cloth(ahead, serial);
   EXPECT_EQ(ahead.final_body.positions, serial.final_body.positions);
+}
+
+// is-egl keeps its maps on its device and answers there: on one device the same run twice, bit for bit, with the
+// next frame's maps drawn on a second thread (its second context) and with every map row drawn too
+TEST(Runner, IsEglGivesTheSameRunOnOneDevice) {
+  const auto built = available_colliders();
+  if (std::find(built.begin(), built.end(), "is-egl") == built.end()) GTEST_SKIP() << "is-egl is not built";
+  RunResult first;
+  try {
+    first = short_skirt_walk({"collider.name=is-egl"});
+  } catch (const std::runtime_error& e) {
+    GTEST_SKIP() << "no EGL context: " << e.what();
+  }
+  ASSERT_FALSE(first.divergence);
+  EXPECT_NE(first.device.find("EGL"), std::string::npos) << first.device;
+  expect_same_cloth(first, short_skirt_walk({"collider.name=is-egl"}));
+  const RunResult ahead = short_skirt_walk({"collider.name=is-egl", "body.prepare_ahead=true"});
+  EXPECT_EQ(first.frames - 1, ahead.prepared_frames);
+  expect_same_cloth(first, ahead);
+  expect_same_cloth(first, short_skirt_walk({"collider.name=is-egl", "collider.query_margin_mm=0"}));
+  EXPECT_GT(first.collider_queries, first.frames);
 }
 
 // body.collision_triangles: the colliders see a simplified copy of the body, the oracle and the pictures the exact
