@@ -8,7 +8,8 @@
 # after each step, so a run cut short still returns what it finished).
 # For a quick trial: WALKING="skirt:672" BENCH_FILTER='^render/(egl|cpu)/float/320$' REPETITIONS=1 (and
 # VARIANTS, default "stable ahead papers-ahead": the walking runs' variants, step 3; COLLIDERS, default
-# "is-egl is-cpu": theirs; GL_TIMER=0 skips step 5).
+# "is-egl is-cpu": theirs; GL_TIMER=0 skips step 5; STEPS, default "maps tests map-render walking determinism
+# gl-timer": the steps to run).
 set -uo pipefail
 TARBALL=${1:?usage: run-on-gpu.sh TARBALL OUTDIR}
 OUTDIR=${2:?usage: run-on-gpu.sh TARBALL OUTDIR}
@@ -40,6 +41,8 @@ VARIANTS=${VARIANTS-stable ahead papers-ahead}
 COLLIDERS=${COLLIDERS-is-egl is-cpu}
 BENCH_FILTER=${BENCH_FILTER:-^(render|query)/(egl|cpu)/}
 GL_TIMER=${GL_TIMER-1}
+STEPS=${STEPS-maps tests map-render walking determinism gl-timer}
+want() { [[ " $STEPS " == *" $1 "* ]]; }
 REPETITIONS=${REPETITIONS:-3}
 CB=$B/bin/clothbench
 BODY=$REPO/scenes/data/body/mh_female_walk.glb
@@ -84,17 +87,19 @@ maps() {
     done; done
   done
 }
-step maps maps 2>&1 | tee "$R/maps.txt"
-python3 "$HERE/compare_maps.py" "$R/maps" > "$R/maps-compare.json" 2> "$R/maps-compare.err" || cat "$R/maps-compare.err"
-pack
+if want maps; then
+  step maps maps 2>&1 | tee "$R/maps.txt"
+  python3 "$HERE/compare_maps.py" "$R/maps" > "$R/maps-compare.json" 2> "$R/maps-compare.err" || cat "$R/maps-compare.err"
+  pack
+fi
 
 # 4 (cheap, so early). the EGL tests: EGL against the CPU rasteriser, bit for bit (OSMesa comparisons skip here),
 # and the answers of the maps kept on the device against the CPU's from the same maps
-step tests "$B/bin/collide_is_tests" --gtest_filter='EglMaps.*:ImageSpaceAccuracy.Egl*:EglQueries.*' \
+want tests && step tests "$B/bin/collide_is_tests" --gtest_filter='EglMaps.*:ImageSpaceAccuracy.Egl*:EglQueries.*' \
   --gtest_output=json:"$R/collide_is_tests.json" 2>&1 | tee "$R/collide_is_tests.txt"
 
 # 2. map rendering per renderer and size, and query batches (`make bench-gpu`; GL rows need OSMesa, not in this build)
-step map-render "$B/bin/collide_is_bench" --benchmark_filter="$BENCH_FILTER" --benchmark_repetitions=$REPETITIONS \
+want map-render && step map-render "$B/bin/collide_is_bench" --benchmark_filter="$BENCH_FILTER" --benchmark_repetitions=$REPETITIONS \
   --benchmark_out="$R/map-render.json" --benchmark_out_format=json 2>&1 | tee "$R/map-render.txt"
 
 # 3. the walking runs of `make bench-gpu`: skirt (672 v) and dress with sleeves (2300 v), is-egl and is-cpu, each in
@@ -109,11 +114,25 @@ variant_sets() {
       --set body.prepare_ahead=true ;;
   esac
 }
-for gv in $WALKING; do for v in $VARIANTS; do for c in $COLLIDERS; do
+want walking && for gv in $WALKING; do for v in $VARIANTS; do for c in $COLLIDERS; do
   g=${gv%:*}; n=walking-$g-$c; [ $v = stable ] || n=$n-$v
   step $n "$CB" run "$REPO/scenes/walking/$g.toml" --collider $c --set garment.vertices=${gv#*:} $(variant_sets $v) \
     --every-frame --quiet --json "$R/$n.json" 2>&1 | tee "$R/$n.txt"
 done; done; done
+
+# 6. determinism on the device: the skirt's walk with is-egl twice, and with the next frame prepared ahead (its maps
+# drawn in the second context), each exported as glTF (the cloth's positions at every kept frame): the same bytes
+determinism() {
+  local g=$R/determinism && mkdir -p "$g"
+  for n in first second ahead; do
+    local more=() && [ $n = ahead ] && more=(--set body.prepare_ahead=true)
+    "$CB" run "$REPO/scenes/walking/skirt.toml" --collider is-egl --set garment.vertices=672 "${more[@]}" --quiet \
+      --gltf "$g/$n.glb" --json "$g/$n.json" > "$g/$n.txt" || return
+  done
+  sha256sum "$g"/*.glb | tee "$g/sha256.txt"
+  cmp "$g/first.glb" "$g/second.glb" && cmp "$g/first.glb" "$g/ahead.glb" && echo "determinism: the same bytes"
+}
+want determinism && step determinism determinism 2>&1 | tee "$R/determinism.txt"
 
 # 5. where is-egl's time goes: the same EGL work once more with gl_timer.c preloaded (time inside glReadPixels =
 # waiting for the GPU's drawing + the read-back; per frame), appended to gl-timer.jsonl
@@ -130,5 +149,5 @@ gl_timer() {
       --quiet --json "$R/gl-timer-walking-$g-is-egl.json" || return
   done
 }
-[ "$GL_TIMER" = 0 ] || step gl-timer gl_timer 2>&1 | tee "$R/gl-timer.txt"
+{ [ "$GL_TIMER" = 0 ] || ! want gl-timer; } || step gl-timer gl_timer 2>&1 | tee "$R/gl-timer.txt"
 echo "=== done"; cat "$R/exit-codes.txt"; pack
