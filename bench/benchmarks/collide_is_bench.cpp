@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "clothbench/collide_is/device_maps.hpp"
 #include "clothbench/collide_is/image_space_collider.hpp"
 #include "clothbench/config.h"
 #ifdef CLOTHBENCH_WITH_EGL
@@ -74,8 +75,11 @@ void bm_render(benchmark::State& state, const std::string& renderer, bool float_
   o.views = views;
   o.layers = layers;
   std::unique_ptr<Collider> c;
+  const DeviceMaps* device = nullptr;
   try {
-    c = std::make_unique<ImageSpaceCollider>(make_renderer(renderer), o, 0.0);
+    auto r = make_renderer(renderer);
+    device = r->device_maps();
+    c = std::make_unique<ImageSpaceCollider>(std::move(r), o, 0.0);
     c->set_body(bench_body().frame);  // warm-up: first frame compiles shaders
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
@@ -91,6 +95,9 @@ void bm_render(benchmark::State& state, const std::string& renderer, bool float_
   const CollideStats s = c->stats();
   state.counters["update_ms"] = s.update_ms / static_cast<double>(s.updates);
   if (s.queries > 0) state.counters["query_batch_ms"] = s.query_ms / static_cast<double>(s.queries);
+  // the device's own time per phase of a frame's maps (timestamp queries)
+  if (device)
+    for (const auto& [phase, ms] : device->draw_phases_ms()) state.counters["gpu_" + phase + "_ms"] = ms;
   state.counters["setup_ms"] = s.setup_ms;
   state.counters["body_triangles"] = bench_body().frame.triangle_count();
   state.SetLabel(c->device());

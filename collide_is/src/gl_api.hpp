@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace clothbench {
 
@@ -33,8 +34,8 @@ namespace clothbench {
 
 // OpenGL 4.3 (compute shaders, shader storage buffers): the maps kept on the device (gl_device_maps.cpp)
 #define CLOTHBENCH_GL_COMPUTE_FUNCTIONS(X)                                                                   \
-  X(BindBufferBase) X(BufferSubData) X(DispatchCompute) X(Finish) X(GetBufferSubData) X(GetIntegerv) X(MemoryBarrier) \
-      X(Uniform3f)
+  X(BindBufferBase) X(BufferSubData) X(DeleteQueries) X(DispatchCompute) X(Finish) X(GenQueries) X(GetBufferSubData)   \
+      X(GetIntegerv) X(GetQueryObjectui64v) X(MemoryBarrier) X(QueryCounter) X(Uniform3f)
 
 // the gl<name> prototypes of GL's headers, as pointer types (GL 1.x functions have no PFN... typedef there)
 #define CLOTHBENCH_GL_TYPE(name) using name##_fn = std::remove_pointer_t<decltype(&::gl##name)>*;
@@ -65,6 +66,53 @@ struct GlApi {
 #undef CLOTHBENCH_GL_LOAD
     return gl;
   }
+};
+
+// The device's own time of a draw's phases: a GL_TIMESTAMP query at the end of each stretch of commands, the
+// stretch's time added to the phase named there (read once the device has finished).
+class GpuClock {
+ public:
+  enum Phase { kUpload, kDraw, kDepthCopy, kResolve, kSideLayer, kPhases };
+  static constexpr std::array<const char*, kPhases> kNames = {"upload", "draw", "depth_copy", "resolve", "side_layer"};
+
+  void start(const GlApi& gl) {
+    gl_ = &gl;
+    used_ = 0;
+    mark(kPhases);
+  }
+  // the commands since the last mark belong to `phase`
+  void mark(int phase) {
+    if (!gl_) return;
+    if (used_ == ids_.size()) {
+      ids_.resize(ids_.size() + 32);
+      gl_->GenQueries(32, ids_.data() + used_);
+    }
+    gl_->QueryCounter(ids_[used_], GL_TIMESTAMP);
+    phases_.resize(ids_.size());
+    phases_[used_++] = phase;
+  }
+  // after glFinish: each phase's time [ms]
+  std::array<double, kPhases> read() const {
+    std::array<double, kPhases> ms{};
+    GLuint64 last = 0;
+    for (std::size_t k = 0; k < used_; ++k) {
+      GLuint64 t = 0;
+      gl_->GetQueryObjectui64v(ids_[k], GL_QUERY_RESULT, &t);
+      if (k > 0 && phases_[k] < kPhases) ms[static_cast<std::size_t>(phases_[k])] += 1e-6 * double(t - last);
+      last = t;
+    }
+    return ms;
+  }
+  void release() {
+    if (gl_ && !ids_.empty()) gl_->DeleteQueries(static_cast<GLsizei>(ids_.size()), ids_.data());
+    ids_.clear();
+  }
+
+ private:
+  const GlApi* gl_ = nullptr;
+  std::vector<GLuint> ids_;
+  std::vector<int> phases_;
+  std::size_t used_ = 0;
 };
 
 // a shader of `type` compiled from `source`; throws std::runtime_error "WHO: shader does not compile: LOG"

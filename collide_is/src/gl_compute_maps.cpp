@@ -289,7 +289,8 @@ std::string source(const char* body) { return std::string("#version 430 core\n")
 
 }  // namespace
 
-GlComputeMaps::GlComputeMaps(const GlApi& gl, std::string who) : gl_(gl), who_(std::move(who)) {
+GlComputeMaps::GlComputeMaps(const GlApi& gl, std::string who, GpuClock& clock)
+    : gl_(gl), who_(std::move(who)), clock_(clock) {
   resolve_ = program(kResolve);
   side_ = program(kSide);
   query_ = program(kQuery);
@@ -346,7 +347,10 @@ void GlComputeMaps::resolve(int slot, int view, int map, GLuint normal, GLuint v
   const Slot& s = slots_[static_cast<std::size_t>(slot)];
   const MapFrame& f = s.shape.frame;
   // the pass's z-buffer values of the view's rows, read into a buffer on the device once per pass (its first view)
-  if (view == 0) read_zbuffer(f);
+  if (view == 0) {
+    read_zbuffer(f);
+    clock_.mark(GpuClock::kDepthCopy);
+  }
   const int axis = MapFrame::view_axis(view);
   // depth_from_zbuffer's planes: views 0-1 on z_min / z_max, the others on their own axis's
   const float hi = f.plane_max(axis), lo = f.plane_min(axis), range = view < 2 ? f.depth_range() : hi - lo;
@@ -373,6 +377,7 @@ void GlComputeMaps::resolve(int slot, int view, int map, GLuint normal, GLuint v
   const auto groups = static_cast<GLuint>((f.size + 7) / 8);
   gl_.DispatchCompute(groups, groups, 1);
   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  clock_.mark(GpuClock::kResolve);
 }
 
 void GlComputeMaps::read_zbuffer(const MapFrame& f) {

@@ -13,8 +13,9 @@ namespace clothbench {
 
 class GlComputeMaps {
  public:
-  // compiles the shaders; the context is current and offers OpenGL 4.3 (`gl` loaded with its compute functions)
-  GlComputeMaps(const GlApi& gl, std::string who);
+  // compiles the shaders; the context is current and offers OpenGL 4.3 (`gl` loaded with its compute functions);
+  // `clock` (the drawing's, outliving this) is marked after each depth copy and resolve
+  GlComputeMaps(const GlApi& gl, std::string who, GpuClock& clock);
   GlComputeMaps(const GlComputeMaps&) = delete;
   GlComputeMaps& operator=(const GlComputeMaps&) = delete;
   // deletes every GL object; the context is current
@@ -43,6 +44,7 @@ class GlComputeMaps {
 
   GlApi gl_;
   std::string who_;
+  GpuClock& clock_;
   GLuint resolve_ = 0, side_ = 0, query_ = 0;
   std::array<Slot, DeviceMaps::kSlots> slots_;
   GLuint points_ = 0, contacts_ = 0;  // the query batch's buffers

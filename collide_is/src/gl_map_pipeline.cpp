@@ -67,13 +67,14 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
     make_current(Role::kDraw);
     gl_ = GlApi::load([this](const char* f) { return context_->proc(f); }, who_, context_->compute());
     set_up();
-    if (context_->compute()) compute_ = std::make_unique<GlComputeMaps>(gl_, who_);
+    if (context_->compute()) compute_ = std::make_unique<GlComputeMaps>(gl_, who_, clock_);
     context_->release();
   }
 
   ~GlMapRenderer() override {
     context_->make_current(context_index(Role::kDraw));
     if (compute_) compute_->release();
+    clock_.release();
     release_targets();
     gl_.DeleteBuffers(static_cast<GLsizei>(vbo_.size()), vbo_.data());
     gl_.DeleteVertexArrays(1, &vao_);
@@ -99,10 +100,22 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
 
   void draw(const BodyFrame& body, const MapSet& shape, int rings, int slot) override {
     const Current current(*this, Role::kDraw);
+    clock_.start(gl_);
     compute_->begin(slot, shape);
     passes(body, shape, [&](int view, int map) { compute_->resolve(slot, view, map, tex_[0], tex_[1]); });
     compute_->side_layer(slot, rings);
+    clock_.mark(GpuClock::kSideLayer);
     gl_.Finish();
+    const auto ms = clock_.read();
+    for (std::size_t k = 0; k < ms.size(); ++k) phase_total_ms_[k] += ms[k];
+    ++draws_;
+  }
+
+  std::vector<std::pair<std::string, double>> draw_phases_ms() const override {
+    std::vector<std::pair<std::string, double>> out;
+    for (std::size_t k = 0; draws_ > 0 && k < phase_total_ms_.size(); ++k)
+      out.emplace_back(GpuClock::kNames[k], phase_total_ms_[k] / double(draws_));
+    return out;
   }
 
   void query(int slot, PointsView points, DepthTest test, ViewRule rule, Real tol, Contact* out) override {
@@ -149,7 +162,9 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
   void passes(const BodyFrame& body, const MapSet& maps, const std::function<void(int, int)>& keep) {
     targets(maps);
     upload(body, maps.has_velocity);
+    clock_.mark(GpuClock::kUpload);
     draw_views(body, maps);
+    clock_.mark(GpuClock::kDraw);
     for (int view = 0; view < views_; ++view) keep(view, view);
     for (int layer = 2; layer <= maps.frame.layers; ++layer) {
       peel(body, maps);
@@ -303,11 +318,13 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
     gl_.ActiveTexture(GL_TEXTURE0);
     gl_.BindTexture(GL_TEXTURE_2D, tex_[3]);
     gl_.CopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, size_, views_ * size_);
+    clock_.mark(GpuClock::kDepthCopy);
     clear();
     gl_.UseProgram(program_);
     gl_.Uniform1i(u_peel_, 1);
     for (int view = 0; view < views_; view += 2) draw_view(body, maps, view);
     gl_.Uniform1i(u_peel_, 0);
+    clock_.mark(GpuClock::kDraw);
   }
 
   // z-buffer values and colours of view `view`'s rows the maps draw into map `map` (raw z-buffer values:
@@ -336,6 +353,9 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
   std::unique_ptr<GlContext> context_;  // first member: destroyed after the GL objects the destructor deletes
   std::string who_, name_, device_;
   GlApi gl_;
+  GpuClock clock_;                          // device maps: the device's time per phase of a draw
+  std::array<double, GpuClock::kPhases> phase_total_ms_{};
+  long draws_ = 0;
   std::unique_ptr<GlComputeMaps> compute_;  // OpenGL 4.3 contexts: the maps kept on the device
   std::mutex draw_mutex_, answer_mutex_;    // one call per role at a time (Current)
   GLuint program_ = 0, vao_ = 0, fbo_ = 0;

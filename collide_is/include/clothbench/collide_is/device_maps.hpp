@@ -2,6 +2,10 @@
 /// Maps that stay on the device that draws them and answer the cloth's points there (is-egl: OpenGL 4.3 compute
 /// shaders). Only the answers come back, a few bytes a point; the maps themselves are copied out only on request
 /// (pictures, tests, `clothbench maps`).
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "clothbench/collide_is/image_space_collider.hpp"
 #include "clothbench/collide_is/map_set.hpp"
 
@@ -25,6 +29,9 @@ class DeviceMaps {
   virtual void query(int slot, PointsView points, DepthTest test, ViewRule rule, Real tol, Contact* out) = 0;
   /// A CPU copy of map set `slot`, every array sized and filled as the CPU path would fill it.
   virtual void copy(int slot, MapSet& maps) = 0;
+  /// The device's own time per draw, by phase ("upload", "draw", "depth_copy", "resolve", "side_layer"), mean over
+  /// every draw so far [ms] (its timestamp queries; empty before the first draw).
+  virtual std::vector<std::pair<std::string, double>> draw_phases_ms() const = 0;
 };
 
 }  // namespace clothbench
