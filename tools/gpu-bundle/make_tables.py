@@ -141,6 +141,25 @@ def main():
                            f"| {b['skinning_ms_per_frame']:.2f} | {b['collider_update_ms_per_frame']:.2f} "
                            f"| {cloth:.1f} | {worst} {extra}")
 
+    # a later run of the maps' phases on the device (timestamp queries): profile-<commit>/
+    for prof in sorted(d.glob("profile-*")):
+        commit = re.search(r"git_commit: (\w+)", (prof / "environment.txt").read_text())[1]
+        phases = ("upload", "draw", "depth_copy", "resolve", "side_layer")
+        out += ["", f"## The device's time per phase at {commit[:7]} (`{prof.name}/`)", "",
+                "collide_is_bench, one repetition: `update_body` per frame as the CPU sees it, and the GPU's own time "
+                "of each phase of the same frame's maps (GL_TIMESTAMP queries, mean over the frames) [ms].", "",
+                "| benchmark | update [ms] | " + " | ".join(phases) + " | GPU sum |",
+                "|---|---|" + "---|" * (len(phases) + 1)]
+        for r in bench_rows(prof / "map-render.json"):
+            if not r["name"].startswith("render/egl/") or r.get("run_type") == "aggregate":
+                continue
+            g = [r.get(f"gpu_{p}_ms", float("nan")) for p in phases]
+            out.append(f"| {r['name']} | {r['update_ms']:.3f} | " + " | ".join(f"{x:.3f}" for x in g) +
+                       f" | {sum(g):.3f} |")
+        for w in sorted(prof.glob("walking-*.txt")):
+            lines = [x.strip() for x in w.read_text().splitlines() if "frames/s" in x or "collider queries" in x]
+            out += ["", f"`{w.name}`: " + "; ".join(lines)]
+
     # a later, smaller run (walking only) of a newer commit: check-<commit>/
     for check in sorted(d.glob("check-*")):
         commit = re.search(r"git_commit: (\w+)", (check / "environment.txt").read_text())[1]
