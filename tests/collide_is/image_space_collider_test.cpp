@@ -580,10 +580,14 @@ void expect_prepared_on_another_thread(std::unique_ptr<Collider> (*make)(const C
   EXPECT_EQ(a.z, b.z);
   EXPECT_EQ(a.velocity, b.velocity);
   EXPECT_EQ(ahead->stats().updates, 1);
-  // the thread that made the collider draws again after another did
+  // the thread that made the collider draws again after another did (maps() again: a device's maps are copied out
+  // on request)
   ahead->update_body(s);
   in_turn->update_body(s);
-  EXPECT_EQ(a.z, b.z);
+  const auto& a2 = dynamic_cast<ImageSpaceCollider&>(*ahead).maps();
+  const auto& b2 = dynamic_cast<ImageSpaceCollider&>(*in_turn).maps();
+  EXPECT_EQ(a2.z, b2.z);
+  EXPECT_FALSE(a2.has_velocity && a2.velocity.empty());
 }
 
 TEST(ImageSpaceCollider, MapsPreparedOnAnotherThreadBecomeCurrentAtTheNextUpdate) {
