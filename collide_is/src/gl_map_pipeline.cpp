@@ -131,9 +131,9 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
  private:
   // What a call does: draw (targets, vertex arrays, a map set's buffers) or answer from a map set (queries, copies).
   // With two contexts (GlContext::contexts()) each role has its own, so a map set may be drawn on one thread while
-  // another answers from the other set; the answering context stays current on its thread between calls (a
-  // context released and made current again costs more than a query batch), the drawing one is released after
-  // each call, so any thread may draw next. With one context both roles take turns on it, released after each call.
+  // another answers from the other set; the answering context stays current on its thread between calls (no other
+  // thread needs it), the drawing one is released after each call, so any thread may draw next. With one context
+  // both roles take turns on it, released after each call.
   enum class Role { kDraw, kAnswer };
   int context_index(Role role) const { return context_->contexts() == 2 && role == Role::kDraw ? 1 : 0; }
   bool kept(Role role) const { return context_->contexts() == 2 && role == Role::kAnswer; }
