@@ -165,6 +165,23 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   return cloth;
 }
 
+// a garment placed partly inside the body starts sewing from a tangle the push-out may not undo: say so, with how
+// much and how deep (the exact body's signed distance at every cloth vertex)
+void warn_start_inside(const Scene& scene, const ClothMesh& cloth, const BodyFrame& exact) {
+  std::vector<Real> d;
+  Oracle(exact).signed_distance(cloth.positions, d);
+  long inside = 0;
+  Real deepest = 0;
+  for (const Real x : d) inside += x < 0, deepest = std::min(deepest, x);
+  const double share = d.empty() ? 0.0 : 100.0 * double(inside) / double(d.size());
+  if (share > 1.0)
+    std::fprintf(stderr,
+                 "clothbench: warning: %s: the garment starts with %ld of %zu vertices (%.1f %%) inside the body, "
+                 "the deepest %.1f mm: sewing starts from a tangle (move the pattern's panels out, or check the "
+                 "body's size and facing)\n",
+                 scene.path.c_str(), inside, d.size(), share, -1e3 * double(deepest));
+}
+
 std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
   if (name == "sphere") {
     if (!body.is_sphere()) throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
@@ -658,6 +675,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
     r.proxy_deviation_mm = proxy_deviation_mm(frame, exact);
   }
   ClothMesh cloth = build_cloth(scene, exact);
+  warn_start_inside(scene, cloth, exact);
   std::unique_ptr<Collider> collider = make_scene_collider(scene, scene.collider, source);
   collider->set_body(frame);
   r.setup_ms = collider->stats().setup_ms;

@@ -2,6 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <string>
 
 #include "clothbench/bench/body_between_frames.hpp"
 #include "clothbench/bench/registry.hpp"
@@ -168,6 +172,32 @@ TEST(Runner, FramesPreparedAheadGiveTheSameRun) {
   EXPECT_EQ(1, serial.threads);
   expect_same_cloth(ahead, serial);
   EXPECT_EQ(ahead.final_body.positions, serial.final_body.positions);
+}
+
+// a garment placed half inside the body is named on stderr before anything runs; the shipped placement is not
+TEST(Runner, AGarmentPlacedInsideTheBodyIsWarnedAbout) {
+  const std::string src = CLOTHBENCH_SOURCE_DIR, dir = testing::TempDir();
+  const auto read = [](const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  // the skirt's panels 2 cm before and behind the torso's axis, not wrapped round it
+  const std::string pattern = std::regex_replace(read(src + "/scenes/garments/skirt.pattern"),
+                                                 std::regex("offset 0 0 (-?)20 (yaw 180 )?wrap 20"), "offset 0 0 $012 $2wrap 0");
+  std::ofstream(dir + "/inside.pattern") << pattern;
+  std::ofstream(dir + "/inside.toml") << std::regex_replace(read(src + "/scenes/dressing/skirt.toml"),
+                                                            std::regex("garments/skirt\\.pattern"), dir + "/inside.pattern");
+  RunOptions estimate;
+  estimate.progress = false;
+  estimate.estimate_only = true;
+  testing::internal::CaptureStderr();
+  run_scene(load_scene(dir + "/inside.toml", {}), estimate);
+  const std::string warned = testing::internal::GetCapturedStderr();
+  EXPECT_NE(warned.find("inside the body"), std::string::npos) << warned;
+  testing::internal::CaptureStderr();
+  run_scene(load_scene(src + "/scenes/dressing/skirt.toml", {}), estimate);
+  const std::string shipped = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(shipped.find("inside the body"), std::string::npos) << shipped;
 }
 
 // is-egl keeps its maps on its device and answers there: on one device the same run twice, bit for bit, with the
