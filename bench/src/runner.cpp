@@ -166,20 +166,22 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
 }
 
 // a garment placed partly inside the body starts sewing from a tangle the push-out may not undo: say so, with how
-// much and how deep (the exact body's signed distance at every cloth vertex)
-void warn_start_inside(const Scene& scene, const ClothMesh& cloth, const BodyFrame& exact) {
-  std::vector<Real> d;
-  Oracle(exact).signed_distance(cloth.positions, d);
+// much and how deep (as the collider that dresses it answers, one query of every cloth vertex)
+void warn_start_inside(const Scene& scene, const ClothMesh& cloth, Collider& collider) {
+  std::vector<Contact> contacts(static_cast<std::size_t>(cloth.vertex_count()));
+  collider.query(PointsView(cloth.positions), ContactsOut{contacts.data(), contacts.size()});
   long inside = 0;
   Real deepest = 0;
-  for (const Real x : d) inside += x < 0, deepest = std::min(deepest, x);
-  const double share = d.empty() ? 0.0 : 100.0 * double(inside) / double(d.size());
+  for (const Contact& c : contacts)
+    if (c.hit && c.depth < 0) ++inside, deepest = std::min(deepest, c.depth);
+  const double share = contacts.empty() ? 0.0 : 100.0 * double(inside) / double(contacts.size());
   if (share > 1.0)
     std::fprintf(stderr,
                  "clothbench: warning: %s: the garment starts with %ld of %zu vertices (%.1f %%) inside the body, "
-                 "the deepest %.1f mm: sewing starts from a tangle (move the pattern's panels out, or check the "
-                 "body's size and facing)\n",
-                 scene.path.c_str(), inside, d.size(), share, -1e3 * double(deepest));
+                 "the deepest %.1f mm (as %s answers): sewing starts from a tangle (move the pattern's panels out, "
+                 "or check the body's size and facing)\n",
+                 scene.path.c_str(), inside, contacts.size(), share, -1e3 * double(deepest),
+                 std::string(collider.name()).c_str());
 }
 
 std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
@@ -675,7 +677,6 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
     r.proxy_deviation_mm = proxy_deviation_mm(frame, exact);
   }
   ClothMesh cloth = build_cloth(scene, exact);
-  warn_start_inside(scene, cloth, exact);
   std::unique_ptr<Collider> collider = make_scene_collider(scene, scene.collider, source);
   collider->set_body(frame);
   r.setup_ms = collider->stats().setup_ms;
@@ -684,6 +685,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
     dresser = make_scene_collider(scene, scene.dress_with, source);
     dresser->set_body(frame);
   }
+  warn_start_inside(scene, cloth, dresser ? *dresser : *collider);
   std::optional<Simulator> sim;
   try {
     sim.emplace(std::move(cloth), scene.material, scene.solver);
