@@ -118,14 +118,16 @@ TEST(Runner, TheFirstStaticSceneEndsDressedWithNoSkinShowing) {
 
 // a garment dressed on a walking body's pose mid-stride: the body stands still while it is sewn and draped,
 // so the cloth settles on it (given the clip's velocity at that pose, the contacts dragged it along and it
-// never settled)
+// never settled). One limit pass, once a step: the cloth stretches round the open stride while it is sewn (the
+// walking scenes' 16 passes after the response hold it at its limit and the side seam stays open)
 TEST(Runner, AWalkingBodyStandsStillWhileTheGarmentIsDressedOnIt) {
   RunOptions quiet;
   quiet.progress = false;
   const RunResult r =
       run_scene(load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/walking/skirt.toml",
                            {"garment.vertices=200", "collider.name=embree", "collider.dress_with=embree",
-                            "body.dress_at_s=1.5", "body.start_s=1.5", "body.end_s=1.55"}),
+                            "body.dress_at_s=1.5", "body.start_s=1.5", "body.end_s=1.55", "solver.limit_passes=1",
+                            "solver.limit_after_response=false"}),
                 quiet);
   ASSERT_FALSE(r.divergence) << r.divergence->reason;
   EXPECT_TRUE(r.drape.reached);
