@@ -165,16 +165,20 @@ def main():
         commit = re.search(r"git_commit: (\w+)", (check / "environment.txt").read_text())[1]
         out += ["", f"## Check at {commit[:7]}: walking only (`{check.name}/`)", "",
                 "The same machine kind, another VM (compare within this table only): stable and ahead as above, "
-                "frames/s and the collider's maps ms/frame.", "",
-                "| garment | variant | collider | frames/s | skinning [ms/frame] | maps [ms/frame] |", "|---|---|---|---|---|---|"]
+                "frames/s, the collider's maps ms/frame, the worst frame's strain and the accuracy verdict (every "
+                "limit at every frame, strain included).", "",
+                "| garment | variant | collider | frames/s | skinning [ms/frame] | maps [ms/frame] | strain, worst frame [%] "
+                "| meets the limits |", "|---|---|---|---|---|---|---|---|"]
         for g in ("skirt", "dress_sleeves"):
             for suffix, variant in variants:
                 for c in COLLIDERS:
                     path = check / f"walking-{g}-{c}{suffix}.json"
                     if path.exists():
                         (b,) = bench_rows(path)
+                        verdict = "yes" if b.get("meets_limits") else "no: " + "; ".join(b.get("limit_misses", []))
                         out.append(f"| {g} ({b['vertices']} v) | {variant} | {c} | {b.get('fps', 0.0):.2f} "
-                                   f"| {b['skinning_ms_per_frame']:.2f} | {b['collider_update_ms_per_frame']:.2f} |")
+                                   f"| {b['skinning_ms_per_frame']:.2f} | {b['collider_update_ms_per_frame']:.2f} "
+                                   f"| {100 * b.get('worst_frame_strain_max', 0.0):.1f} | {verdict} |")
 
     out += ["", "## is-egl's maps against is-cpu's", "",
             "Float maps (tests/collide_is/egl_test.cpp, EglMaps.SameAsCpuAsIsGlIs; the walking body at rest and a "
