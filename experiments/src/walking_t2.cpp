@@ -92,7 +92,7 @@ std::vector<WalkVariant> walk_variants() {
   v.push_back({"stable, 0.5 s", "walk_07_01", "stable", "/0.5s", {"body.end_s=1.5"}, {"vdb"}});
   v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some});
   // the papers' clock with walking Eq. 5's averaging limit (with the directional one, Eq. 6, the dress diverges
-  // there), the regime's 32 passes (the scenes' own 16 would override the preset) stopping at 0.05 mm
+  // there), the regime's 32 passes stopping at 0.05 mm
   const auto papers_clock = [](std::vector<std::string> more, const std::string& tolerance_mm = kPapersTolerance) {
     more.insert(more.begin(),
                 {"solver.limit=velocity", "solver.limit_passes=32", "solver.limit_tolerance_mm=" + tolerance_mm});
@@ -438,7 +438,7 @@ void walking_t2(ExperimentContext& ctx) {
       "lead-in (0 - 1 s), then measured over **two seconds of walking** (1 - 3 s, about two gait cycles) in place, on "
       "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
       "animation time and the cloth takes `steps/frame` steps of dt per frame, in our stable regime (its limit the "
-      "walking scenes': walking Eq. 5, 16 passes, run again after the collision response; results/limiters.md "
+      "regime's default: walking Eq. 5, 8 passes, run again after the collision response; results/limiters.md "
       "measures the alternatives, Eq. 6 and fewer passes among them) and at the papers' "
       "clock (`solver.regime = papers`: dt 5 ms, equal point masses, soft springs, 32 limit passes; see dressing-t1; "
       "the passes here stop once they change no point by more than " + std::string(kPapersTolerance) +

@@ -49,7 +49,7 @@ void apply_regime(Regime regime, Material& material, SolverParams& params) {
   params.limit = papers ? "directional" : stable.limit;
   params.limit_passes = papers ? 32 : stable.limit_passes;
   params.seam_stiffness = stable.seam_stiffness;
-  params.limit_after_response = papers;
+  params.limit_after_response = papers || stable.limit_after_response;
   // soft seams close slowly over their last millimetres: pairs within 5 mm are sewn (2 mm stable)
   params.merge_distance = papers ? Real(0.005) : stable.merge_distance;
   // soft seams pull k |d| up to a 5 cm gap (5 mm with the stable regime's stiff ones): about the stable pull

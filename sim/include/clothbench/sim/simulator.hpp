@@ -69,11 +69,12 @@ struct SolverParams {
   std::string limit = "velocity";        ///< the strain limiter, by name (limiter_names(); limiter.hpp)
   Real threshold = 0.10f;                ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
   Real stiff_factor = 10.f;              ///< the `stiff` limit multiplies every stiffness by this
-  int limit_passes = 1;                  ///< passes of the limit over the springs per call (the most)
+  int limit_passes = 8;                  ///< passes of the limit over the springs per call (the most)
   /// velocity limits run once more after the collision response, each pass followed by stopping motion into the
-  /// body of the vertices in contact (the response would otherwise undo the limit where the body holds the cloth;
-  /// papers regime)
-  bool limit_after_response = false;
+  /// body of the vertices in contact (the response would otherwise undo the limit where the body holds the cloth).
+  /// Both regimes: walking Eq. 5 with 8 passes after the response is the stable regime's cheapest setting measured
+  /// (results/limiters.md) that holds every limit on the static and the walking body
+  bool limit_after_response = true;
   Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
   Real limit_tolerance = 0;              ///< a velocity limit pass's change that moves a point less than this over the
                                          ///< step does not make the next pass visit its springs [m] (0: any change)
