@@ -66,10 +66,11 @@ struct Measured {
   std::string verdict;      // limits_cell: "yes", or what it misses
 };
 
+// whether the stable regime runs the limiter again after the response, as words after its name
+std::string after_words(const Setting& s) { return s.after ? ", again after the response" : ""; }
+
 // the limiter's name, and whether the stable regime runs it again after the response
-std::string limit_label(const Setting& s) {
-  return std::string(s.limit) + (s.after ? ", again after the response" : "");
-}
+std::string limit_label(const Setting& s) { return std::string(s.limit) + after_words(s); }
 
 std::vector<std::string> row_cells(const Measured& m, const RunResult& r) {
   const bool walking = *m.c->clip;
@@ -150,7 +151,8 @@ std::string cheapest(const std::vector<Measured>& rows) {
         best = &n;
     out += std::string("- ") + m.c->garment + ", " + (*m.c->clip ? m.c->clip : "static body") + ", " + m.s.regime +
            ": " +
-           (best ? std::string("`") + best->s.limit + "`" + (best->s.after ? " run again after the response" : "") + " with " + std::to_string(best->s.passes) + " passes, " +
+           (best ? std::string("`") + best->s.limit + "`" + after_words(best->s) + ", " + std::to_string(best->s.passes) +
+                       " passes, " +
                        num(best->limit_ms, 3) + " ms a step (" + num(100 * best->share, 0) + " % of the step), strain " +
                        num(best->strain_pct, 1) + " %"
                  : std::string("no setting measured here meets every limit")) +

@@ -79,6 +79,7 @@ void write_sequence(PictureRenderer& pictures, const std::vector<SequenceFrame>&
 struct WalkVariant {
   std::string label, clip, regime, row_suffix;
   std::vector<std::string> sets, colliders;
+  bool speed = false;  // a row of the speed paragraph's frontier (taken from the dress with is-cpu)
 };
 
 // stable and papers' regimes with every collider on walk_07_01, stable on walk_08_02 with image space and the
@@ -87,21 +88,21 @@ std::vector<WalkVariant> walk_variants() {
   const std::vector<std::string> all{"is-gl", "is-egl", "is-cpu", "fcl", "embree", "bbtree"},
       some{"is-gl", "is-egl", "is-cpu", "embree"};
   std::vector<WalkVariant> v;
-  v.push_back({"stable", "walk_07_01", "stable", "", {}, all});
+  v.push_back({"stable", "walk_07_01", "stable", "", {}, all, true});
   // vdb voxelises the skinned body again every frame (seconds each): half a second of walking only
   v.push_back({"stable, 0.5 s", "walk_07_01", "stable", "/0.5s", {"body.end_s=1.5"}, {"vdb"}});
-  v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some});
+  v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some, true});
   // the papers' clock with walking Eq. 5's averaging limit (with the directional one, Eq. 6, the dress diverges
   // there), the regime's 32 passes stopping at 0.05 mm
   const auto papers_clock = [](std::vector<std::string> more, const std::string& tolerance_mm = kPapersTolerance) {
     more.insert(more.begin(),
-                {"solver.limit=velocity", "solver.limit_passes=32", "solver.limit_tolerance_mm=" + tolerance_mm});
+                {"solver.limit=velocity", "solver.limit_tolerance_mm=" + tolerance_mm});
     return more;
   };
   v.push_back({"papers' clock, Eq. 5 limit", "walk_07_01", "papers", "/papers", papers_clock({}), all});
   const std::vector<std::string> is_cpu{"is-cpu"};
   v.push_back({"papers' clock, directional limit (Eq. 6)", "walk_07_01", "papers", "/papers-eq6",
-               {"solver.limit=directional", "solver.limit_passes=32"}, is_cpu});
+               {"solver.limit=directional"}, is_cpu});
   v.push_back({"papers' clock, Eq. 5 limit", "walk_08_02", "papers", "/papers/walk_08_02",
                papers_clock({"body.animation=walk_08_02"}), is_cpu});
   // beyond the papers: the strain limit as a fast projection (Goldenthal et al. 2007), 8 Newton iterations a call
@@ -135,23 +136,24 @@ std::vector<WalkVariant> walk_variants() {
                "stable",
                "/ahead",
                {"body.prepare_ahead=true"},
-               is_cpu});
+               is_cpu,
+               true});
   // the speed row: the papers' clock with the next frame prepared on a second thread; then what looser limit passes
   // with one surface per camera, and one pass with the papers' own image space, buy in speed and cost in accuracy
   // (the speed paragraph's frontier)
   v.push_back({"papers' clock, Eq. 5 limit, next frame prepared ahead (2 threads)", "walk_07_01", "papers",
-               "/papers-ahead", papers_clock({"body.prepare_ahead=true"}), is_cpu});
+               "/papers-ahead", papers_clock({"body.prepare_ahead=true"}), is_cpu, true});
   v.push_back(
       {"papers' clock, Eq. 5 limit, passes stopping at 1 mm, one surface per camera, prepared ahead (2 "
        "threads)",
        "walk_07_01", "papers", "/papers-ahead-1mm", papers_clock({"body.prepare_ahead=true", "collider.layers=1"}, "1"),
-       is_cpu});
+       is_cpu, true});
   // the colliders' body simplified (body.collision_triangles): cheaper maps, the oracle still on the exact body
   v.push_back(
       {"papers' clock, Eq. 5 limit, the colliders' body simplified to 6,000 triangles, prepared ahead (2 "
        "threads)",
        "walk_07_01", "papers", "/papers-ahead-proxy",
-       papers_clock({"body.prepare_ahead=true", "body.collision_triangles=6000"}), is_cpu});
+       papers_clock({"body.prepare_ahead=true", "body.collision_triangles=6000"}), is_cpu, true});
   // everything that buys speed at once, the skin 1 mm thicker for the simplified body's error (2.8 mm at 6,000
   // triangles); on both clips
   const std::vector<std::string> fast =
@@ -161,16 +163,16 @@ std::vector<WalkVariant> walk_variants() {
   const std::string fast_label =
       "papers' clock, Eq. 5 limit, passes stopping at 2 mm, one surface per camera, 224² maps, the colliders' body "
       "simplified to 6,000 triangles, 5 mm skin (7 mm hit distance), prepared ahead (2 threads)";
-  v.push_back({fast_label, "walk_07_01", "papers", "/papers-ahead-fast", fast, is_cpu});
+  v.push_back({fast_label, "walk_07_01", "papers", "/papers-ahead-fast", fast, is_cpu, true});
   std::vector<std::string> fast_08 = fast;
   fast_08.push_back("body.animation=walk_08_02");
-  v.push_back({fast_label, "walk_08_02", "papers", "/papers-ahead-fast/walk_08_02", fast_08, is_cpu});
+  v.push_back({fast_label, "walk_08_02", "papers", "/papers-ahead-fast/walk_08_02", fast_08, is_cpu, true});
   std::vector<std::string> published = papers_clock({"body.prepare_ahead=true", "solver.limit_passes=1"});
   published.insert(published.end(), papers_is.begin(), papers_is.end());
   v.push_back(
       {"papers' clock, Eq. 5 limit, 1 limit pass, the papers' image space (front/back, z test, 8-bit), "
        "prepared ahead (2 threads)",
-       "walk_07_01", "papers", "/papers-ahead-published", published, is_cpu});
+       "walk_07_01", "papers", "/papers-ahead-published", published, is_cpu, true});
   v.push_back({"stable, no push-out", "walk_07_01", "stable", "/nopush", {"solver.push_out=false"}, is_cpu});
   v.push_back({"stable, without Eq. 16", "walk_07_01", "stable", "/noeq16", {"solver.reaction_force=false"}, is_cpu});
   v.push_back({"stable, body held per frame", "walk_07_01", "stable", "/held", {"body.move_between_frames=false"},
@@ -397,10 +399,7 @@ void walking_t2(ExperimentContext& ctx) {
         t.row(walk_row(g.product, variant, c, r, paper::kWalkingT2[i]));
         // the speed paragraph's rows: the dress with is-cpu prepared ahead at the papers' clock, and in the stable
         // regime (one thread and prepared ahead)
-        const bool stable_speed = variant.regime == "stable" &&
-                                  (variant.row_suffix.empty() || variant.row_suffix == "/walk_08_02" ||
-                                   variant.row_suffix == "/ahead");
-        if (i == 1 && c == "is-cpu" && (stable_speed || variant.row_suffix.rfind("/papers-ahead", 0) == 0)) {
+        if (i == 1 && c == "is-cpu" && variant.speed) {
           const bool failed = r.frames == 0 || r.divergence || !dressed(r);
           frontier.push_back({variant.label, variant.clip, failed ? 0.0 : 1 / frame_times(r).s,
                               failed ? std::string("diverged or not dressed") : accuracy_misses(r), frame_times(r),
