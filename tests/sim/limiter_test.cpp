@@ -137,6 +137,51 @@ TEST(Limiters, RegistryNamesEveryMemberOnceAndRejectsOthers) {
   for (const LimiterInfo& l : limiter_registry()) EXPECT_TRUE(make_limiter(l.name, {}) != nullptr) << l.name;
 }
 
+// walking section 3.2 as stated, on one over-stretched spring at a time: across v_dir (gravity here) both ends take
+// their average (Eq. 5); along it the rear end takes the front one's; only once a step; an attached end never moves
+TEST(Limiters, DirectionalLiteralAppliesTheRulesAsStated) {
+  ClothMesh c;
+  c.positions.resize(3, 2);
+  c.springs.resize(2, 1);
+  c.springs << 0, 1;
+  c.rest_length = Scalars::Constant(1, 1);
+  Points3 x(3, 2), v(3, 2);
+  const Scalars m = Scalars::Constant(2, 1);
+  Scalars inv_m = Scalars::Constant(2, 1);
+  const std::vector<Contact> contacts;
+  const std::vector<std::vector<int>> merged;
+  LimitState s{c, x, v, m, inv_m, contacts, merged, Vec3(0, -9.81f, 0), 0.005f};
+  const auto limit = make_limiter("directional-literal", {});
+  // horizontal, 1.2 long, ends moving apart along it: both to their mean, the normal parts kept
+  x << 0, 1.2f, 0, 0, 0, 0;
+  v << -1, 3, 0.5f, 0, 0, 0;
+  limit->limit_velocities(s, false);
+  EXPECT_FLOAT_EQ(v(0, 0), 1);
+  EXPECT_FLOAT_EQ(v(0, 1), 1);
+  EXPECT_FLOAT_EQ(v(1, 0), 0.5f);
+  // vertical, p2 below p1 (p12 along gravity, cos alpha > 0): the rear point p1 takes p2's velocity along it
+  x << 0, 0, 0, -1.2f, 0, 0;
+  v << 0, 0, 0, -2, 0, 0;
+  limit->limit_velocities(s, true);  // the call after the response: the paper has none
+  EXPECT_FLOAT_EQ(v(1, 0), 0);
+  limit->limit_velocities(s, false);
+  EXPECT_FLOAT_EQ(v(1, 0), -2);
+  EXPECT_FLOAT_EQ(v(1, 1), -2);
+  // the same with p1 attached: its velocity is the body's, the spring is left to the next step
+  v << 0, 0, 0, -2, 0, 0;
+  inv_m[0] = 0;
+  limit->limit_velocities(s, false);
+  EXPECT_FLOAT_EQ(v(1, 0), 0);
+  EXPECT_FLOAT_EQ(v(1, 1), -2);
+  // within the threshold: nothing changes
+  inv_m[0] = 1;
+  x << 0, 1.05f, 0, 0, 0, 0;
+  v << -1, 3, 0, 0, 0, 0;
+  limit->limit_velocities(s, false);
+  EXPECT_FLOAT_EQ(v(0, 0), -1);
+  EXPECT_FLOAT_EQ(v(0, 1), 3);
+}
+
 TEST(Limiters, HangingSquare) {
   const auto none = hanging_square("none", 1);
   std::printf("[ hanging ] none %s\n", show(none).c_str());

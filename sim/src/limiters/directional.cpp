@@ -1,10 +1,59 @@
-// `directional` (walking Eq. 6 with our reading of its rules: directional.hpp).
-#include "directional.hpp"
+// `directional` (walking Eq. 6, our reading): over-stretched springs about perpendicular to the directional vector
+// v_dir = v_grav + v_object average (Eq. 5); on the others the rear point catches up with the front one. A held rear
+// point (attached, in contact, or already following one) cannot catch up, so the front follows it and is held in
+// turn; catching up that would add kinetic energy averages instead (directional_literal.cpp: the rules as stated).
+#include <cmath>
+#include <limits>
+
+#include "limiters.hpp"
+#include "stretch_rules.hpp"
+#include "velocity_sweep.hpp"
 
 namespace clothbench {
 
+namespace {
+
+class Directional final : public VelocitySweep<Directional> {
+  using Base = VelocitySweep<Directional>;
+
+ public:
+  using Base::Base;
+
+  std::pair<Real, Real> split(int a, int b, const Vec3& u, Real va, Real vb, Real target) {
+    // walking Eq. 6: v_dir = v_grav + v_object, v_grav = g dt (zero while sewing: no gravity acts)
+    const Vec3 v_dir = this->s_->gravity * this->dt_ + object_velocity(a, b);
+    const Real cos_a = v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
+    const int rear = cos_a > 0 ? a : b;
+    auto& held = this->held_;
+    if (std::abs(cos_a) >= 0.3f && held[static_cast<std::size_t>(rear)]) {
+      // a held rear point cannot catch up: the front follows it and is held in turn (our reading)
+      const Real na = rear == a ? va : vb - target;
+      const int front = rear == a ? b : a;
+      if (!held[static_cast<std::size_t>(front)])
+        held[static_cast<std::size_t>(front)] = 1, this->mark_changed(front, std::numeric_limits<Real>::infinity());
+      return {na, na + target};
+    }
+    return stretch_rules::directional(va, vb, cos_a, this->m_[a], this->m_[b], target, false);
+  }
+
+ private:
+  // the velocity of the object the spring's ends collide with (zero when neither does)
+  Vec3 object_velocity(int a, int b) const {
+    const auto& contacts = this->s_->contacts;
+    if (contacts.empty()) return Vec3::Zero();
+    const Contact& ca = contacts[static_cast<std::size_t>(a)];
+    const Contact& cb = contacts[static_cast<std::size_t>(b)];
+    if (ca.hit && cb.hit) return 0.5f * (ca.body_velocity + cb.body_velocity);
+    if (ca.hit) return ca.body_velocity;
+    if (cb.hit) return cb.body_velocity;
+    return Vec3::Zero();
+  }
+};
+
+}  // namespace
+
 std::unique_ptr<Limiter> make_directional_limit(const LimiterParams& params) {
-  return std::make_unique<Directional<false>>(params);
+  return std::make_unique<Directional>(params);
 }
 
 }  // namespace clothbench
