@@ -96,16 +96,18 @@ std::string ExperimentContext::grid_note(std::size_t runs) const {
 }
 
 const RunResult& ExperimentContext::run(const std::string& scene, const std::string& collider,
-                                        const std::vector<std::string>& sets, const RunOptions& options) {
+                                        const std::vector<std::string>& sets, const RunOptions& options,
+                                        int at_least) {
   const std::string key = cache_key(scene, collider, sets);
   auto it = cache_.find(key);
   if (it == cache_.end()) {
     const Scene with = scene_for(scene, collider, sets);
     std::vector<RunResult> runs;
-    for (int r = 0; r < repetitions_; ++r) {
+    const int n = std::max(repetitions_, at_least);
+    for (int r = 0; r < n; ++r) {
       RunOptions o = options;
       if (o.label.empty()) o.label = with.name + "/" + collider;
-      std::cerr << "  running " << o.label << (repetitions_ > 1 ? " #" + std::to_string(r + 1) : "") << "\n";
+      std::cerr << "  running " << o.label << (n > 1 ? " #" + std::to_string(r + 1) : "") << "\n";
       runs.push_back(run_scene(with, o));
     }
     it = cache_.emplace(key, std::move(runs)).first;
@@ -113,13 +115,20 @@ const RunResult& ExperimentContext::run(const std::string& scene, const std::str
   return median_run(it->second);
 }
 
-void ExperimentContext::add_run(const RunResult& r, const std::string& name, const nlohmann::json& extra) {
-  std::vector<nlohmann::json> rows;
+std::vector<const RunResult*> ExperimentContext::repetitions_of(const RunResult& r) const {
   for (const auto& [key, runs] : cache_)
     for (const RunResult& rep : runs)
-      if (&rep == &r)
-        for (const RunResult& each : runs) rows.push_back(result_row(each, name));
-  if (rows.empty()) rows.push_back(result_row(r, name));  // not one of run()'s
+      if (&rep == &r) {
+        std::vector<const RunResult*> all;
+        for (const RunResult& each : runs) all.push_back(&each);
+        return all;
+      }
+  return {&r};  // not one of run()'s
+}
+
+void ExperimentContext::add_run(const RunResult& r, const std::string& name, const nlohmann::json& extra) {
+  std::vector<nlohmann::json> rows;
+  for (const RunResult* each : repetitions_of(r)) rows.push_back(result_row(*each, name));
   for (auto& row : rows) row.update(extra);
   for (auto& row : repetition_rows(rows)) rows_.push_back(std::move(row));
 }

@@ -1,7 +1,10 @@
-// linear_fit: least squares and R^2.
+// linear_fit: least squares and R^2; power_fit: the exponent of y = a + b x^k with its profile confidence interval.
 #include "clothbench/experiments/statistics.hpp"
 
+#include <algorithm>
+#include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
+#include <limits>
 
 namespace clothbench {
 
@@ -17,6 +20,50 @@ void linear_fit(const std::vector<double>& x, const std::vector<double>& y, doub
     ss_tot += std::pow(y[i] - sy / n, 2);
   }
   r2 = ss_tot > 0 ? 1 - ss_res / ss_tot : 1;
+}
+
+namespace {
+
+// the residual sum of squares of y = a + b x^k at a fixed k (a linear least squares in x^k)
+double power_sse(const std::vector<double>& x, const std::vector<double>& y, double k, double& a, double& b) {
+  std::vector<double> xk(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) xk[i] = std::pow(x[i], k);
+  double r2 = 0;
+  linear_fit(xk, y, a, b, r2);
+  double sse = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) sse += std::pow(y[i] - (a + b * xk[i]), 2);
+  return sse;
+}
+
+}  // namespace
+
+PowerFit power_fit(const std::vector<double>& x, const std::vector<double>& y, double confidence) {
+  PowerFit f;
+  const std::size_t n = x.size();
+  if (n < 4) return f;  // three parameters and at least one degree of freedom left
+  // x scaled to its largest value keeps x^k in range for every k of the grid (b scales, k does not)
+  double scale = 0;
+  for (double v : x) scale = std::max(scale, v);
+  std::vector<double> xs(n);
+  for (std::size_t i = 0; i < n; ++i) xs[i] = x[i] / scale;
+  constexpr double kLow = 0.2, kHigh = 3, kStep = 0.005;
+  std::vector<double> ks, sses;
+  double best = std::numeric_limits<double>::infinity();
+  for (double k = kLow; k <= kHigh + 1e-12; k += kStep) {
+    double a = 0, b = 0;
+    const double sse = power_sse(xs, y, k, a, b);
+    ks.push_back(k), sses.push_back(sse);
+    if (sse < best) best = sse, f.k = k, f.a = a, f.b = b / std::pow(scale, k);
+  }
+  // profile likelihood interval (Bates & Watts 1988, Nonlinear Regression Analysis, ch. 6): every k whose SSE stays
+  // within the F bound
+  const double dof = double(n) - 3;
+  const double bound = best * (1 + boost::math::quantile(boost::math::fisher_f(1, dof), confidence) / dof);
+  f.k_low = kHigh, f.k_high = kLow;
+  for (std::size_t i = 0; i < ks.size(); ++i)
+    if (sses[i] <= bound) f.k_low = std::min(f.k_low, ks[i]), f.k_high = std::max(f.k_high, ks[i]);
+  f.at_grid_edge = f.k_low <= kLow || f.k_high >= kHigh;
+  return f;
 }
 
 }  // namespace clothbench

@@ -30,5 +30,25 @@ TEST(Statistics, LinearFitRecoversALineAndItsR2) {
   EXPECT_LT(r2, 1);
 }
 
+// time = fixed cost + per-vertex cost: linear although a log-log slope over these sizes would read well under 1
+TEST(Statistics, PowerFitFindsTheExponentAndItsInterval) {
+  const std::vector<double> x{500, 1000, 2000, 3500, 5000, 8000, 12000, 20000};
+  std::vector<double> line, square;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double noise = 1 + 0.01 * (i % 2 ? 1 : -1);  // +-1 %
+    line.push_back((2 + 0.003 * x[i]) * noise);
+    square.push_back((2 + 1e-6 * x[i] * x[i]) * noise);
+  }
+  const PowerFit l = power_fit(x, line), q = power_fit(x, square);
+  EXPECT_NEAR(l.k, 1, 0.05);
+  EXPECT_LE(l.k_low, 1);
+  EXPECT_GE(l.k_high, 1);
+  EXPECT_NEAR(q.k, 2, 0.05);
+  EXPECT_GT(q.k_low, 1.5);  // 1 lies far outside
+  EXPECT_FALSE(l.at_grid_edge);
+  EXPECT_LT(l.k_high - l.k_low, 0.5);
+  EXPECT_EQ(power_fit({1, 2, 3}, {1, 2, 3}).k, 0);  // too few points: no fit
+}
+
 }  // namespace
 }  // namespace clothbench

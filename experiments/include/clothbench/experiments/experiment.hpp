@@ -61,9 +61,12 @@ class ExperimentContext {
   /// Runs scenes/SCENE (relative to the source tree's scenes/) with a collider and overrides;
   /// identical requests in one `reproduce` share one run. With repetitions > 1 the run is
   /// repeated and the repetition with the median time per iteration is returned; add_run() writes
-  /// every repetition's row and the aggregates.
+  /// every repetition's row and the aggregates. `at_least`: repeat it so many times even without --repetitions
+  /// (timings that a verdict rests on); a request already cached keeps the runs it has.
   const RunResult& run(const std::string& scene, const std::string& collider, const std::vector<std::string>& sets = {},
-                       const RunOptions& options = {});
+                       const RunOptions& options = {}, int at_least = 1);
+  /// Every repetition of the request that returned `r` (r alone when it is not one of run()'s).
+  std::vector<const RunResult*> repetitions_of(const RunResult& r) const;
   /// Colliders of `wanted` that this build has (the others are reported as not built).
   std::vector<std::string> colliders(const std::vector<std::string>& wanted) const;
   /// Adds a JSON row for the current experiment (measurements not made by run()).

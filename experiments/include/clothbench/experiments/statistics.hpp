@@ -7,4 +7,13 @@ namespace clothbench {
 /// Least squares y = a + b x over the points, and its R^2.
 void linear_fit(const std::vector<double>& x, const std::vector<double>& y, double& a, double& b, double& r2);
 
+/// y = a + b x^k by least squares (k on a grid of 0.005 from 0.2 to 3), and the `confidence` interval of the
+/// exponent k from the profile of the residual sum of squares (F test); k = 1 inside it: linear. Needs 4 points.
+struct PowerFit {
+  double a = 0, b = 0, k = 0;
+  double k_low = 0, k_high = 0;
+  bool at_grid_edge = false;  ///< the interval reaches the grid's end: the points do not bound the exponent
+};
+PowerFit power_fit(const std::vector<double>& x, const std::vector<double>& y, double confidence = 0.95);
+
 }  // namespace clothbench
