@@ -1,6 +1,7 @@
 // walking-t2: walking paper Table 2, garments on the walking body (every frame measured, ablations of how the body
 // moves).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -73,6 +74,14 @@ void write_sequence(PictureRenderer& pictures, const std::vector<SequenceFrame>&
     std::snprintf(name, sizeof name, "-frame%03ld.png", f.frame);
     pictures.render(body, mesh, 200, View::kFront).write_png(prefix + name);
   }
+}
+
+// how much cloth time a frame of the walk is in one regime: steps of dt against the body's frame
+std::string frame_clock(const std::string& regime, const RunResult& r, double fps) {
+  const int digits = r.steps_per_frame == std::floor(r.steps_per_frame) ? 0 : 2;
+  return regime + " " + num(r.steps_per_frame, digits) + " steps of " + num(1e3 * r.dt_s, 3) +
+         " ms = " + num(1e3 * r.steps_per_frame * r.dt_s, 1) + " ms of cloth time per " + num(1e3 / fps, 1) +
+         " ms frame";
 }
 
 // a walking run of walking-t2: which clip, regime and collider, and what it changes from the scene
@@ -362,7 +371,7 @@ void walking_t2(ExperimentContext& ctx) {
                    "frames/s", "skinning ms/frame", "maps, refit or field ms/frame", "cloth ms/frame (CD&R + CS)",
                    "paper s/frame / frames/s", "inside [%] worst / mean frame", "depth max [mm] worst frame",
                    "crossings [%] worst / mean frame", "strain max / p99 [%] worst frame", "meets the limits (every frame)"});
-  std::string media, charts, models;
+  std::string media, charts, models, clocks;
   std::vector<SpeedRun> frontier;
   std::optional<RunResult> speed_run;
   double proxy_mm = 0;  // the simplified body's largest distance from the exact one, where a row simplifies it
@@ -397,6 +406,16 @@ void walking_t2(ExperimentContext& ctx) {
           };
         const RunResult& r = ctx.run(scene, c, sets, options);
         t.row(walk_row(g.product, variant, c, r, paper::kWalkingT2[i]));
+        // the cloth's clock and what holds the garment, from the is-cpu runs of both regimes on walk_07_01
+        if (c == "is-cpu" && (main || (variant.row_suffix == "/papers" && r.frames))) {
+          const double fps = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
+          if (main)
+            clocks += std::string(clocks.empty() ? "" : "; ") + g.product + ": " +
+                      (r.mesh.attached.empty() ? std::string("nothing attached")
+                                               : std::to_string(r.mesh.attached.size()) +
+                                                     " vertices attached to the body (its waist, Durupinar 3.2)");
+          clocks += ", " + frame_clock(variant.regime, r, fps);
+        }
         // the speed paragraph's rows: the dress with is-cpu prepared ahead at the papers' clock, and in the stable
         // regime (one thread and prepared ahead)
         if (i == 1 && c == "is-cpu" && variant.speed) {
@@ -452,7 +471,10 @@ void walking_t2(ExperimentContext& ctx) {
       "stable regime only, its per-frame voxelisation costing seconds. The paper's figures include rendering the "
       "scene on screen, ours do not. The exact oracle measures **every frame** (outside s/frame): the worst and the "
       "mean frame's inside and crossings, the worst frame's depth; the verdict counts the worst frame. A garment whose "
-      "seams are still open when the walk starts (gap > 2 mm) gets no timings: it is listed as not dressed.\n\n"
+      "seams are still open when the walk starts (gap > 2 mm) gets no timings: it is listed as not dressed. "
+      "The walk is in place (`body.walk_in_place`: the root's travel removed). "
+      "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +
+          clocks + ".\n\n"
       "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end, and each "
       "cloth step within the frame sees the contacts as they were at the step's time, d(t - tau) = d(t) + "
       "(n . v_body) tau (`body.move_between_frames`); points found inside are moved out along the contact normal "
