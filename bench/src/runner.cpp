@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <random>
 #include <thread>
 #include <utility>
@@ -58,6 +59,15 @@ const RunResult& median_run(const std::vector<RunResult>& runs) {
 
 namespace {
 
+// what loading the body changed or warns about (body_loader.hpp), once per file and process
+void print_notes(const BodyModel& model) {
+  static std::set<std::string> printed;
+  if (!printed.insert(model.path()).second) return;
+  for (const std::string& n : model.notes())
+    std::fprintf(stderr, "clothbench: %s: %s%s\n", model.path().c_str(), n.rfind("warning: ", 0) == 0 ? "" : "note: ",
+                 n.c_str());
+}
+
 // the body and its motion: a (possibly animated) mesh, or a sphere moving at constant velocity
 class BodySource {
  public:
@@ -70,6 +80,7 @@ class BodySource {
       return;
     }
     model_.emplace(load_body(resolve_scene_path(scene, spec_.file)));
+    print_notes(*model_);
     if (spec_.collision_triangles > 0) proxy_.emplace(model_->simplified(spec_.collision_triangles));
     if (spec_.animation.empty()) return;
     anim_ = model_->animation_index(spec_.animation);
