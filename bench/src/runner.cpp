@@ -195,6 +195,26 @@ void warn_start_inside(const Scene& scene, const ClothMesh& cloth, Collider& col
                  std::string(collider.name()).c_str());
 }
 
+// an attached vertex bound far from the body holds the garment in mid-air (an attached edge that sewing did not
+// bring to the body): warn
+void warn_attached_far(const Scene& scene, const Simulator& sim) {
+  constexpr Real kFar = 0.01f;  // [m]: a waistband rests on the body within a few millimetres
+  const Points3& offsets = sim.attachment_offsets();
+  long far = 0;
+  Real farthest = 0;
+  for (Eigen::Index i = 0; i < offsets.cols(); ++i) {
+    const Real d = offsets.col(i).norm();
+    farthest = std::max(farthest, d);
+    far += d > kFar;
+  }
+  if (far)
+    std::fprintf(stderr,
+                 "clothbench: warning: %s: %ld of %ld attached vertices are bound more than %.0f mm from the body (the "
+                 "farthest %.1f mm): they hold the garment in mid-air (check the pattern's attached edge and that "
+                 "sewing brings it to the body)\n",
+                 scene.path.c_str(), far, long(offsets.cols()), 1e3 * double(kFar), 1e3 * double(farthest));
+}
+
 std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
   if (name == "sphere") {
     if (!body.is_sphere()) throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
@@ -727,7 +747,10 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   progress.plan(budget.total());
   sew(scene, *sim, progress, options.trace, r);
   // attachments (Durupinar 3.2) bind where sewing left the waistband, before gravity comes on
-  if (!sim->mesh().attached.empty()) sim->attach(frame);
+  if (!sim->mesh().attached.empty()) {
+    sim->attach(frame);
+    warn_attached_far(scene, *sim);
+  }
   progress.plan(budget.drape + budget.animate);
   if (!sim->divergence()) drape(scene, *sim, progress, r.drape);
   progress.plan(budget.animate);
