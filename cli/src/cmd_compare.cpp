@@ -273,11 +273,14 @@ void add_compare_command(CLI::App& app, Action& action) {
                      " repetitions per row for a time verdict; accuracy is judged at any count); exit 1 on a regression "
                      "of time or accuracy, 2 when no row's time could be judged");
   cmd->add_option("files", *paths, "OLD.json NEW.json")->required()->expected(2);
-  cmd->add_option("--threshold", *threshold, "slow-down that counts as a regression [%]")->check(CLI::Range(0.0, 1e6));
+  cmd->add_option("--threshold", *threshold, "slow-down that counts as a regression [%]")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   cmd->add_option("--accuracy-tolerance", *accuracy,
                   "an accuracy figure (inside, depth, crossings, seam gap, strain; worst frame too) worse by more "
                   "than this share of its limit is an accuracy regression [%]")
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   cmd->add_option("--pair-by", *pair_by,
                   "pair rows by these JSON fields' values instead of their names, e.g. scene,vertices to set one "
                   "collider against another (config_hash, which differs then, is not checked)")
