@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <random>
 #include <thread>
 #include <utility>
@@ -58,6 +59,15 @@ const RunResult& median_run(const std::vector<RunResult>& runs) {
 
 namespace {
 
+// what loading the body changed or warns about (body_loader.hpp), once per file and process
+void print_notes(const BodyModel& model) {
+  static std::set<std::string> printed;
+  if (!printed.insert(model.path()).second) return;
+  for (const std::string& n : model.notes())
+    std::fprintf(stderr, "clothbench: %s: %s%s\n", model.path().c_str(), n.rfind("warning: ", 0) == 0 ? "" : "note: ",
+                 n.c_str());
+}
+
 // the body and its motion: a (possibly animated) mesh, or a sphere moving at constant velocity
 class BodySource {
  public:
@@ -70,6 +80,7 @@ class BodySource {
       return;
     }
     model_.emplace(load_body(resolve_scene_path(scene, spec_.file)));
+    print_notes(*model_);
     if (spec_.collision_triangles > 0) proxy_.emplace(model_->simplified(spec_.collision_triangles));
     if (spec_.animation.empty()) return;
     anim_ = model_->animation_index(spec_.animation);
@@ -182,6 +193,26 @@ void warn_start_inside(const Scene& scene, const ClothMesh& cloth, Collider& col
                  "or check the body's size and facing)\n",
                  scene.path.c_str(), inside, contacts.size(), share, -1e3 * double(deepest),
                  std::string(collider.name()).c_str());
+}
+
+// an attached vertex bound far from the body holds the garment in mid-air (an attached edge that sewing did not
+// bring to the body): warn
+void warn_attached_far(const Scene& scene, const Simulator& sim) {
+  constexpr Real kFar = 0.01f;  // [m]: a waistband rests on the body within a few millimetres
+  const Points3& offsets = sim.attachment_offsets();
+  long far = 0;
+  Real farthest = 0;
+  for (Eigen::Index i = 0; i < offsets.cols(); ++i) {
+    const Real d = offsets.col(i).norm();
+    farthest = std::max(farthest, d);
+    far += d > kFar;
+  }
+  if (far)
+    std::fprintf(stderr,
+                 "clothbench: warning: %s: %ld of %ld attached vertices are bound more than %.0f mm from the body (the "
+                 "farthest %.1f mm): they hold the garment in mid-air (check the pattern's attached edge and that "
+                 "sewing brings it to the body)\n",
+                 scene.path.c_str(), far, long(offsets.cols()), 1e3 * double(kFar), 1e3 * double(farthest));
 }
 
 std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
@@ -716,7 +747,10 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   progress.plan(budget.total());
   sew(scene, *sim, progress, options.trace, r);
   // attachments (Durupinar 3.2) bind where sewing left the waistband, before gravity comes on
-  if (!sim->mesh().attached.empty()) sim->attach(frame);
+  if (!sim->mesh().attached.empty()) {
+    sim->attach(frame);
+    warn_attached_far(scene, *sim);
+  }
   progress.plan(budget.drape + budget.animate);
   if (!sim->divergence()) drape(scene, *sim, progress, r.drape);
   progress.plan(budget.animate);

@@ -53,6 +53,7 @@ int run_body(const BodyArgs& a) {
     j["at_s"] = a.at;
   }
   j["max_speed_mps"] = max_speed(frame);
+  j["notes"] = model.notes();
   if (a.json) {
     std::cout << j.dump(2) << "\n";
     return 0;
@@ -67,6 +68,7 @@ int run_body(const BodyArgs& a) {
   if (!a.animation.empty())
     std::cout << "  at " << a.at << " s of " << a.animation << (a.walk_in_place ? " (walking in place)" : "") << ": ";
   std::cout << "  max vertex speed " << j["max_speed_mps"] << " m/s\n";
+  for (const std::string& n : model.notes()) std::cout << "  " << n << "\n";
   return 0;
 }
 

@@ -6,12 +6,16 @@
 // on one side only are listed. Accuracy is judged with any number of repetitions (the simulation is
 // deterministic): a row that stops meeting the accuracy limits, diverges, or whose accuracy figure worsens by more
 // than --accuracy-tolerance of that figure's limit is an accuracy regression. Exit 1 on a regression of either
-// kind, 2 when no row's time could be judged.
+// kind, 2 when no row's time could be judged. --pair-by FIELD,... pairs the rows by those fields' values instead
+// of their names (collider A in one file against collider B in the other: --pair-by scene,vertices); each pair is
+// listed, and config_hash, which differs across such pairs by design, is not checked.
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/timing_stats.hpp"
@@ -67,6 +71,7 @@ struct Benchmark {
   std::vector<double> ns;          // real_time of every iteration row (one per repetition) [ns]
   std::set<std::string> hashes;    // config_hash where the rows have one
   std::string unit = "ms";         // the rows' time_unit, for printing
+  nlohmann::json first;            // the first iteration row (the fields --pair-by reads)
 };
 using Benchmarks = std::map<std::string, Benchmark>;
 
@@ -95,9 +100,34 @@ Benchmarks read_benchmarks(const std::string& path) {
     b.unit = row.value("time_unit", std::string("ms"));
     b.ns.push_back(row["real_time"].get<double>() * ns_per(b.unit, path));
     if (row.contains("config_hash") && row["config_hash"].is_string()) b.hashes.insert(row["config_hash"].get<std::string>());
-    if (!b.accuracy.present) b.accuracy = read_accuracy(row);
+    if (!b.accuracy.present) b.accuracy = read_accuracy(row), b.first = row;
   }
   return s;
+}
+
+// "field=value, ..." of a row for --pair-by
+std::string pair_key(const nlohmann::json& row, const std::vector<std::string>& fields, const std::string& path,
+                     const std::string& name) {
+  std::string key;
+  for (const std::string& f : fields) {
+    if (!row.contains(f)) throw InputError(path + ": row '" + name + "' has no field '" + f + "' (--pair-by)");
+    key += (key.empty() ? "" : ", ") + f + "=" + (row[f].is_string() ? row[f].get<std::string>() : row[f].dump());
+  }
+  return key;
+}
+
+// the rows of one file by their --pair-by key; two rows with one key cannot be paired
+std::map<std::string, std::string> by_key(const Benchmarks& rows, const std::vector<std::string>& fields,
+                                          const std::string& path) {
+  std::map<std::string, std::string> out;
+  for (const auto& [name, b] : rows) {
+    const std::string key = pair_key(b.first, fields, path, name);
+    const auto [it, added] = out.emplace(key, name);
+    if (!added)
+      throw InputError(path + ": rows '" + it->second + "' and '" + name + "' both have " + key +
+                       ": --pair-by does not tell them apart (add a field)");
+  }
+  return out;
 }
 
 std::string fixed(double v, int digits) {
@@ -173,10 +203,29 @@ void compare_one(const std::string& name, const Benchmark& o, const Benchmark& n
   print_row(name, before, after, ratio, fixed(c.p_slower, 4), c.regression ? "REGRESSION" : "ok");
 }
 
-int compare(const std::string& old_path, const std::string& new_path, double threshold_pct, double accuracy_pct) {
-  const Benchmarks before = read_benchmarks(old_path), after = read_benchmarks(new_path);
+// the rows under the names compare prints: their own, or with --pair-by their key (the hash then not compared)
+Benchmarks keyed(const Benchmarks& rows, const std::vector<std::string>& fields, const std::string& path) {
+  if (fields.empty()) return rows;
+  Benchmarks out;
+  for (const auto& [key, name] : by_key(rows, fields, path)) {
+    out[key] = rows.at(name);
+    out[key].hashes.clear();
+  }
+  return out;
+}
+
+int compare(const std::string& old_path, const std::string& new_path, double threshold_pct, double accuracy_pct,
+            const std::vector<std::string>& pair_by) {
+  const Benchmarks old_rows = read_benchmarks(old_path), new_rows = read_benchmarks(new_path);
+  const Benchmarks before = keyed(old_rows, pair_by, old_path), after = keyed(new_rows, pair_by, new_path);
+  if (!pair_by.empty()) {
+    const auto old_names = by_key(old_rows, pair_by, old_path), new_names = by_key(new_rows, pair_by, new_path);
+    for (const auto& [key, name] : old_names)
+      if (new_names.count(key)) std::printf("paired by %s: old '%s' with new '%s'\n", key.c_str(), name.c_str(),
+                                            new_names.at(key).c_str());
+  }
   Tally tally;
-  print_row("name", "old (median)", "new (median)", "new/old [95 % CI]", "p", "verdict");
+  print_row(pair_by.empty() ? "name" : "pair", "old (median)", "new (median)", "new/old [95 % CI]", "p", "verdict");
   for (const auto& [name, o] : before) {
     const auto it = after.find(name);
     if (it == after.end()) {
@@ -202,8 +251,11 @@ int compare(const std::string& old_path, const std::string& new_path, double thr
                  tally.changed);
   if (tally.regressions || tally.accuracy_regressions) return 1;
   if (tally.judged == 0) {
-    std::fprintf(stderr, "clothbench compare: no row could be judged: run both sides with --repetitions %d or more\n",
-                 kMinRepetitions);
+    const std::string why = tally.unjudged ? "run both sides with --repetitions " + std::to_string(kMinRepetitions) +
+                                                 " or more"
+                            : tally.changed ? "the rows that pair ran other configurations"
+                                            : "no row pairs (by name, or by --pair-by's fields)";
+    std::fprintf(stderr, "clothbench compare: no row could be judged: %s\n", why.c_str());
     return 2;
   }
   return 0;
@@ -215,18 +267,28 @@ void add_compare_command(CLI::App& app, Action& action) {
   auto paths = std::make_shared<std::vector<std::string>>();
   auto threshold = std::make_shared<double>(10.0);
   auto accuracy = std::make_shared<double>(10.0);
+  auto pair_by = std::make_shared<std::vector<std::string>>();
   auto* cmd = app.add_subcommand(
       "compare", "Compare two result JSON files (>= " + std::to_string(kMinRepetitions) +
                      " repetitions per row for a time verdict; accuracy is judged at any count); exit 1 on a regression "
                      "of time or accuracy, 2 when no row's time could be judged");
   cmd->add_option("files", *paths, "OLD.json NEW.json")->required()->expected(2);
-  cmd->add_option("--threshold", *threshold, "slow-down that counts as a regression [%]")->check(CLI::Range(0.0, 1e6));
+  cmd->add_option("--threshold", *threshold, "slow-down that counts as a regression [%]")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   cmd->add_option("--accuracy-tolerance", *accuracy,
                   "an accuracy figure (inside, depth, crossings, seam gap, strain; worst frame too) worse by more "
                   "than this share of its limit is an accuracy regression [%]")
-      ->check(CLI::Range(0.0, 1e6));
-  cmd->callback([&action, paths, threshold, accuracy] {
-    action = [paths, threshold, accuracy] { return compare((*paths)[0], (*paths)[1], *threshold, *accuracy); };
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd->add_option("--pair-by", *pair_by,
+                  "pair rows by these JSON fields' values instead of their names, e.g. scene,vertices to set one "
+                  "collider against another (config_hash, which differs then, is not checked)")
+      ->delimiter(',');
+  cmd->callback([&action, paths, threshold, accuracy, pair_by] {
+    action = [paths, threshold, accuracy, pair_by] {
+      return compare((*paths)[0], (*paths)[1], *threshold, *accuracy, *pair_by);
+    };
   });
 }
 

@@ -198,6 +198,30 @@ void drop_open_parts(BodyModelImpl& m) {
   m.keep_vertices(keep, out);
 }
 
+// A body in the design frame faces +Z: it is wider (X, shoulders and arms) than deep (Z), and its feet reach further
+// forward than its ankles. Where either fails the body probably faces another way, and the cloth placed in front of
+// it would start inside it: warn (a note), do not guess a rotation.
+void warn_facing(BodyModelImpl& m) {
+  const Points3& x = m.rest.positions;
+  const Box3 box = bounding_box(x);
+  const Vec3 size = box.size();
+  if (size.z() > size.x()) {
+    m.notes.push_back("warning: it is deeper (Z) than wide (X): it may face +-X; the design frame's front is +Z");
+    return;
+  }
+  // soles (the lowest 3 % of the height) against the ankles (3-8 %): the toes reach forward
+  double feet = 0, ankles = 0;
+  int nf = 0, na = 0;
+  for (Eigen::Index v = 0; v < x.cols(); ++v) {
+    const double h = (x(1, v) - box.min.y()) / size.y();
+    if (h < 0.03) feet += x(2, v), ++nf;
+    else if (h < 0.08) ankles += x(2, v), ++na;
+  }
+  if (nf && na && feet / nf < ankles / na - 0.02 * size.y())
+    m.notes.push_back("warning: its feet reach further back (-Z) than its ankles: it may face -Z; the design "
+                      "frame's front is +Z");
+}
+
 // Normalisation to the DESIGN frame. assimp already applies the units and up axis a file declares
 // where its importer supports them (COLLADA <unit>/<up_axis>, glTF is metres +Y up by definition).
 // What remains is a heuristic: a standing body is taller than it is deep, so when its Z extent
@@ -225,6 +249,13 @@ void normalise(BodyModelImpl& m) {
   for (Eigen::Index v = 0; v < m.rest.positions.cols(); ++v)
     m.rest.positions.col(v) =
         (m.normalise * m.rest.positions.col(v).cast<double>().homogeneous()).head<3>().cast<Real>();
+  if (size.z() > size.y()) m.notes.push_back("its Z extent exceeds its Y extent: read as Z-up and turned +Y up");
+  if (scale != 1) {
+    char text[96];
+    std::snprintf(text, sizeof text, "scaled by %g to metres (height %.2f m)", scale, height * scale);
+    m.notes.push_back(text);
+  }
+  warn_facing(m);
 }
 
 Channel read_channel(const aiNodeAnim& a, double tps) {

@@ -198,6 +198,7 @@ BodyModel::~BodyModel() = default;
 const BodyFrame& BodyModel::rest() const { return impl_->rest; }
 int BodyModel::dropped_parts() const { return impl_->dropped_parts; }
 int BodyModel::dropped_vertices() const { return impl_->dropped_vertices; }
+const std::vector<std::string>& BodyModel::notes() const { return impl_->notes; }
 int BodyModel::bone_count() const { return impl_->bone_count; }
 const std::vector<AnimationInfo>& BodyModel::animations() const { return impl_->infos; }
 const std::string& BodyModel::path() const { return impl_->path; }

@@ -47,6 +47,7 @@ class BodyModelImpl {
   BodyFrame rest;                       ///< normalised rest mesh
   int dropped_parts = 0;                ///< small open parts removed (eyes, ...)
   int dropped_vertices = 0;
+  std::vector<std::string> notes;      ///< what normalisation changed, and warnings about the pose (notes())
   int bone_count = 0;                   ///< the file's skin bones (pseudo-bones of static meshes excluded)
   std::vector<AnimationInfo> infos;
   std::vector<SkelNode> nodes;

@@ -225,6 +225,38 @@ TEST_F(Cli, CompareListsRowsOnOneSideOnlyAndReadsEachRowsTimeUnit) {
   EXPECT_NE(read(log).find("only in old"), std::string::npos) << read(log);
 }
 
+// one collider against another: rows named after their colliders pair by the fields the user names, each pair is
+// listed, and the hash (another collider, another configuration) is not held against them
+TEST_F(Cli, ComparePairsRowsAcrossCollidersByTheFieldsNamed) {
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  const auto write = [&](const std::string& path, const std::vector<std::string>& colliders, double t) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const std::string& c : colliders)
+      for (int i = 0; i < 5; ++i)
+        rows.push_back({{"name", "walking-skirt/" + c}, {"run_type", "iteration"}, {"real_time", t * (1 + 0.01 * (i - 2))},
+                        {"time_unit", "ms"}, {"scene", "walking-skirt"}, {"vertices", 680}, {"collider", c},
+                        {"config_hash", "hash-" + c}});
+    std::ofstream(path) << nlohmann::json{{"context", {}}, {"benchmarks", rows}}.dump();
+  };
+  write(file("cpu.json"), {"is-cpu"}, 1.0);
+  write(file("embree.json"), {"embree"}, 2.0);
+  write(file("both.json"), {"is-cpu", "embree"}, 2.0);
+  const std::string cpu = file("cpu.json"), embree = file("embree.json"), log = file("log");
+  EXPECT_EQ(clothbench("compare " + cpu + " " + embree, log), 2) << read(log);  // by name nothing pairs
+  EXPECT_NE(read(log).find("no row pairs"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench("compare " + cpu + " " + embree + " --pair-by scene,vertices", log), 1) << read(log);
+  EXPECT_NE(read(log).find("paired by scene=walking-skirt, vertices=680: old 'walking-skirt/is-cpu' with new "
+                           "'walking-skirt/embree'"),
+            std::string::npos)
+      << read(log);
+  EXPECT_NE(read(log).find("REGRESSION"), std::string::npos) << read(log);  // twice as slow
+  EXPECT_EQ(clothbench("compare " + cpu + " " + embree + " --pair-by collider", log), 2) << read(log);
+  EXPECT_EQ(clothbench("compare " + cpu + " " + embree + " --pair-by colour", log), 2) << read(log);
+  EXPECT_NE(read(log).find("has no field 'colour' (--pair-by)"), std::string::npos) << read(log);
+  EXPECT_EQ(clothbench("compare " + cpu + " " + file("both.json") + " --pair-by scene", log), 2) << read(log);
+  EXPECT_NE(read(log).find("--pair-by does not tell them apart"), std::string::npos) << read(log);
+}
+
 TEST_F(Cli, VersionPrintsTheVersionAndTheGitSha) {
   const std::string log = (dir_ / "log").string();
   ASSERT_EQ(clothbench("--version", log), 0);

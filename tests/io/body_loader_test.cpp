@@ -3,6 +3,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
 #include <string>
 
 #include "clothbench/config.h"
@@ -59,6 +62,49 @@ TEST(BodyLoader, WalkingBodyCountsClosedAndHeight) {
   EXPECT_EQ(body.animations()[0].name, "walk_07_01");
   EXPECT_NEAR(body.animations()[0].duration_s, 3.617, 0.01);
   EXPECT_EQ(body.dropped_parts(), 0);
+}
+
+// the shipped rest body written again with its vertices mapped by f (x, y, z -> new x, y, z)
+std::string rewritten_body(const std::string& name, const std::function<Vec3(const Vec3&)>& f) {
+  std::ifstream in(data_path("body/mh_female_walk_rest.obj"));
+  const std::string out = (std::filesystem::temp_directory_path() / ("clothbench_" + name + ".obj")).string();
+  std::ofstream o(out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream v(line.substr(2));
+      Vec3 p;
+      v >> p.x() >> p.y() >> p.z();
+      const Vec3 q = f(p);
+      o << "v " << q.x() << " " << q.y() << " " << q.z() << "\n";
+    } else {
+      o << line << "\n";
+    }
+  }
+  return out;
+}
+
+bool has_note(const BodyModel& body, const std::string& part) {
+  for (const std::string& n : body.notes())
+    if (n.find(part) != std::string::npos) return true;
+  return false;
+}
+
+// what loading changed is said, and a body turned away from +Z is warned about, not silently used
+TEST(BodyLoader, NotesSayWhatNormalisationChangedAndWarnOfAnotherFacing) {
+  if (!std::filesystem::exists(data_path("body/mh_female_walk_rest.obj"))) GTEST_SKIP() << "no rest body";
+  const BodyModel as_is = load_body(data_path("body/mh_female_walk_rest.obj"));
+  EXPECT_FALSE(has_note(as_is, "warning")) << ::testing::PrintToString(as_is.notes());
+  const BodyModel z_up_cm =
+      load_body(rewritten_body("z_up_cm", [](const Vec3& p) -> Vec3 { return Vec3(p.x(), -p.z(), p.y()) * 100; }));
+  EXPECT_TRUE(has_note(z_up_cm, "turned +Y up")) << ::testing::PrintToString(z_up_cm.notes());
+  EXPECT_TRUE(has_note(z_up_cm, "scaled by")) << ::testing::PrintToString(z_up_cm.notes());
+  EXPECT_FALSE(has_note(z_up_cm, "warning")) << ::testing::PrintToString(z_up_cm.notes());
+  const BodyModel side =
+      load_body(rewritten_body("facing_x", [](const Vec3& p) -> Vec3 { return Vec3(p.z(), p.y(), -p.x()); }));
+  EXPECT_TRUE(has_note(side, "may face +-X")) << ::testing::PrintToString(side.notes());
+  const BodyModel back =
+      load_body(rewritten_body("facing_back", [](const Vec3& p) -> Vec3 { return Vec3(-p.x(), p.y(), -p.z()); }));
+  EXPECT_TRUE(has_note(back, "may face -Z")) << ::testing::PrintToString(back.notes());
 }
 
 TEST(BodyLoader, PoseAtZeroEqualsRestObj) {

@@ -102,15 +102,17 @@ want tests && step tests "$B/bin/collide_is_tests" --gtest_filter='EglMaps.*:Ima
 want map-render && step map-render "$B/bin/collide_is_bench" --benchmark_filter="$BENCH_FILTER" --benchmark_repetitions=$REPETITIONS \
   --benchmark_out="$R/map-render.json" --benchmark_out_format=json 2>&1 | tee "$R/map-render.txt"
 
-# 3. the walking runs of `make bench-gpu`: skirt (672 v) and dress with sleeves (2300 v), is-egl and is-cpu, each in
-# three variants (file suffix): the scene as it is (stable regime; none), the next frame skinned and its maps drawn
-# on a second thread while the cloth steps (-ahead), and walking-t2's speed row: the papers' clock with walking
-# Eq. 5's limit, 16 limit passes, prepared ahead (-papers-ahead)
+# 3. the walking runs of `make bench-gpu`: skirt (672 v) and dress with sleeves (2300 v), is-egl and is-cpu, in the
+# variants of VARIANTS (file suffix): the scene as it is (stable regime; none), the next frame skinned and its maps
+# drawn on a second thread while the cloth steps (-ahead), that with the colliders' body simplified to 6,000
+# triangles (-ahead-proxy: fewer triangles to draw; the oracle keeps the exact body), and walking-t2's speed row:
+# the papers' clock with walking Eq. 5's limit, its passes stopping at 0.05 mm, prepared ahead (-papers-ahead)
 variant_sets() {
   case $1 in
     stable) ;;
     ahead) echo --set body.prepare_ahead=true ;;
-    papers-ahead) echo --set solver.regime=papers --set solver.limit=velocity --set solver.limit_passes=16 \
+    ahead-proxy) echo --set body.prepare_ahead=true --set body.collision_triangles=6000 ;;
+    papers-ahead) echo --set solver.regime=papers --set solver.limit=velocity --set solver.limit_tolerance_mm=0.05 \
       --set body.prepare_ahead=true ;;
   esac
 }

@@ -46,6 +46,9 @@ class BodyModel {
   /// Small open parts removed at load (drop_open_parts) and their vertex count.
   int dropped_parts() const;
   int dropped_vertices() const;
+  /// What loading changed to reach the design frame (metres, +Y up, front +Z: the up axis turned, the scale) and
+  /// warnings about the result (a body that seems to face +-X or -Z), one sentence each; empty when neither.
+  const std::vector<std::string>& notes() const;
   /// Number of skin bones (0 for a static mesh).
   int bone_count() const;
   /// The file's animations, in file order.

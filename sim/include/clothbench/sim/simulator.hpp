@@ -146,6 +146,8 @@ class Simulator {
   /// Moves attached vertices with the body (same topology as in attach()), to where they were `time_before`
   /// seconds before the body's pose (first order in the body velocity), with the body's velocity.
   void follow_attachments(const BodyFrame& body, Real time_before = 0);
+  /// Of each attached vertex, its offset from the body point it is bound to (attach()) [m] (3 x attached).
+  const Points3& attachment_offsets() const { return attach_offset_; }
 
   const char* integrator() const { return integrator_->name(); }
   /// Force evaluations, sub-steps, CG iterations and times of the integrator so far.
