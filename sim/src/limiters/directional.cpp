@@ -20,9 +20,7 @@ class Directional final : public VelocitySweep<Directional> {
   using Base::Base;
 
   std::pair<Real, Real> split(int a, int b, const Vec3& u, Real va, Real vb, Real target) {
-    // walking Eq. 6: v_dir = v_grav + v_object, v_grav = g dt (zero while sewing: no gravity acts)
-    const Vec3 v_dir = this->s_->gravity * this->dt_ + object_velocity(a, b);
-    const Real cos_a = v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
+    const Real cos_a = stretch_rules::directional_cos(u, this->s_->gravity, this->dt_, this->s_->contacts, a, b);
     const int rear = cos_a > 0 ? a : b;
     auto& held = this->held_;
     if (std::abs(cos_a) >= 0.3f && held[static_cast<std::size_t>(rear)]) {
@@ -34,19 +32,6 @@ class Directional final : public VelocitySweep<Directional> {
       return {na, na + target};
     }
     return stretch_rules::directional(va, vb, cos_a, this->m_[a], this->m_[b], target, false);
-  }
-
- private:
-  // the velocity of the object the spring's ends collide with (zero when neither does)
-  Vec3 object_velocity(int a, int b) const {
-    const auto& contacts = this->s_->contacts;
-    if (contacts.empty()) return Vec3::Zero();
-    const Contact& ca = contacts[static_cast<std::size_t>(a)];
-    const Contact& cb = contacts[static_cast<std::size_t>(b)];
-    if (ca.hit && cb.hit) return 0.5f * (ca.body_velocity + cb.body_velocity);
-    if (ca.hit) return ca.body_velocity;
-    if (cb.hit) return cb.body_velocity;
-    return Vec3::Zero();
   }
 };
 

@@ -31,8 +31,7 @@ class DirectionalLiteral final : public Limiter {
         const Real len = p12.norm();
         if (!(len > (1 + params_.threshold) * mesh.rest_length[k])) continue;
         const Vec3 u = p12 / len;
-        const Vec3 v_dir = s.gravity * s.dt + object_velocity(s, a, b);  // walking Eq. 6, v_grav = g dt
-        const Real cos_alpha = v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
+        const Real cos_alpha = stretch_rules::directional_cos(u, s.gravity, s.dt, s.contacts, a, b);  // walking Eq. 6
         const Real va = u.dot(s.v.col(a)), vb = u.dot(s.v.col(b));
         // equal weights: Eq. 5's plain average; no target: the spring keeps no stretching velocity
         const auto [na, nb] = stretch_rules::directional(va, vb, cos_alpha, 1, 1, 0, true);
@@ -44,15 +43,6 @@ class DirectionalLiteral final : public Limiter {
   }
 
  private:
-  // v_object: the velocity of the body where the spring's ends collide with it (zero where neither does)
-  static Vec3 object_velocity(const LimitState& s, int a, int b) {
-    if (s.contacts.empty()) return Vec3::Zero();
-    const Contact& ca = s.contacts[static_cast<std::size_t>(a)];
-    const Contact& cb = s.contacts[static_cast<std::size_t>(b)];
-    if (ca.hit && cb.hit) return 0.5f * (ca.body_velocity + cb.body_velocity);
-    return ca.hit ? ca.body_velocity : cb.hit ? cb.body_velocity : Vec3::Zero();
-  }
-
   LimiterParams params_;
 };
 

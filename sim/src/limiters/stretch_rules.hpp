@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
+#include "clothbench/sim/collider.hpp"
 #include "clothbench/sim/types.hpp"
 
 namespace clothbench::stretch_rules {
@@ -21,6 +23,23 @@ inline Real allowed_length(Real len, Real max_len, Real most) {
 inline std::pair<Real, Real> average(Real va, Real vb, Real wa, Real wb, Real target) {
   const Real mean = (wa * va + wb * vb) / (wa + wb);
   return {mean - target * wb / (wa + wb), mean + target * wa / (wa + wb)};
+}
+
+// walking Eq. 6: the cosine of the angle between a spring's unit vector u (end a to end b) and the directional vector
+// v_dir = v_grav + v_object, v_grav = g dt (zero while sewing: no gravity acts), v_object the velocity of the body
+// where the spring's ends collide with it (their mean when both do, zero when neither does); 0 when v_dir is zero
+inline Real directional_cos(const Vec3& u, const Vec3& gravity, Real dt, const std::vector<Contact>& contacts, int a,
+                            int b) {
+  Vec3 v_object = Vec3::Zero();
+  if (!contacts.empty()) {
+    const Contact& ca = contacts[static_cast<std::size_t>(a)];
+    const Contact& cb = contacts[static_cast<std::size_t>(b)];
+    if (ca.hit && cb.hit) v_object = 0.5f * (ca.body_velocity + cb.body_velocity);
+    else if (ca.hit) v_object = ca.body_velocity;
+    else if (cb.hit) v_object = cb.body_velocity;
+  }
+  const Vec3 v_dir = gravity * dt + v_object;
+  return v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
 }
 
 // walking Eq. 6 rules: perpendicular springs average, others: the rear point catches up with the front
