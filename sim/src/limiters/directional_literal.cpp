@@ -8,8 +8,8 @@
 // after the collision response.
 #include <cmath>
 
-#include "limiters.hpp"
 #include "../merged_points.hpp"
+#include "limiters.hpp"
 #include "stretch_rules.hpp"
 
 namespace clothbench {

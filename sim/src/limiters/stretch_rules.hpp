@@ -34,9 +34,12 @@ inline Real directional_cos(const Vec3& u, const Vec3& gravity, Real dt, const s
   if (!contacts.empty()) {
     const Contact& ca = contacts[static_cast<std::size_t>(a)];
     const Contact& cb = contacts[static_cast<std::size_t>(b)];
-    if (ca.hit && cb.hit) v_object = 0.5f * (ca.body_velocity + cb.body_velocity);
-    else if (ca.hit) v_object = ca.body_velocity;
-    else if (cb.hit) v_object = cb.body_velocity;
+    if (ca.hit && cb.hit)
+      v_object = 0.5f * (ca.body_velocity + cb.body_velocity);
+    else if (ca.hit)
+      v_object = ca.body_velocity;
+    else if (cb.hit)
+      v_object = cb.body_velocity;
   }
   const Vec3 v_dir = gravity * dt + v_object;
   return v_dir.norm() > 0 ? u.dot(v_dir.normalized()) : Real(0);
