@@ -203,11 +203,10 @@ void compare_one(const std::string& name, const Benchmark& o, const Benchmark& n
   print_row(name, before, after, ratio, fixed(c.p_slower, 4), c.regression ? "REGRESSION" : "ok");
 }
 
-// the rows under the names compare prints: their own, or with --pair-by their key (the hash then not compared)
-Benchmarks keyed(const Benchmarks& rows, const std::vector<std::string>& fields, const std::string& path) {
-  if (fields.empty()) return rows;
+// the rows under their --pair-by keys (by_key), the hash then not compared
+Benchmarks keyed(const Benchmarks& rows, const std::map<std::string, std::string>& names) {
   Benchmarks out;
-  for (const auto& [key, name] : by_key(rows, fields, path)) {
+  for (const auto& [key, name] : names) {
     out[key] = rows.at(name);
     out[key].hashes.clear();
   }
@@ -216,13 +215,13 @@ Benchmarks keyed(const Benchmarks& rows, const std::vector<std::string>& fields,
 
 int compare(const std::string& old_path, const std::string& new_path, double threshold_pct, double accuracy_pct,
             const std::vector<std::string>& pair_by) {
-  const Benchmarks old_rows = read_benchmarks(old_path), new_rows = read_benchmarks(new_path);
-  const Benchmarks before = keyed(old_rows, pair_by, old_path), after = keyed(new_rows, pair_by, new_path);
+  Benchmarks before = read_benchmarks(old_path), after = read_benchmarks(new_path);
   if (!pair_by.empty()) {
-    const auto old_names = by_key(old_rows, pair_by, old_path), new_names = by_key(new_rows, pair_by, new_path);
+    const auto old_names = by_key(before, pair_by, old_path), new_names = by_key(after, pair_by, new_path);
     for (const auto& [key, name] : old_names)
       if (new_names.count(key)) std::printf("paired by %s: old '%s' with new '%s'\n", key.c_str(), name.c_str(),
                                             new_names.at(key).c_str());
+    before = keyed(before, old_names), after = keyed(after, new_names);
   }
   Tally tally;
   print_row(pair_by.empty() ? "name" : "pair", "old (median)", "new (median)", "new/old [95 % CI]", "p", "verdict");

@@ -236,7 +236,7 @@ Claim linear_claim(ExperimentContext& ctx) {
     c.numbers += series + " k " + num(f.k, 2) + " (" + num(f.k_low, 2) + "-" + num(f.k_high, 2) + "); ";
     if (series.rfind("shirt is-", 0) != 0) continue;
     ++judged;
-    if (!f.at_grid_edge && f.k_low <= 1 && 1 <= f.k_high) ++linear;
+    if (f.linear()) ++linear;
   }
   c.numbers += "exponent k of time = a + b n^k, 95 % interval";
   c.verdict = judged == 0        ? "untestable: no image-space series of the shirt"

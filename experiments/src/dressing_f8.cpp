@@ -21,7 +21,7 @@ std::string exponent_cell(const PowerFit& f) {
 // whether time grows linearly: k = 1 inside the interval, else which way it departs
 std::string linearity(const PowerFit& f) {
   if (f.at_grid_edge) return "undecided (the sizes do not bound the exponent)";
-  if (f.k_low <= 1 && 1 <= f.k_high) return "linear (1 inside the interval)";
+  if (f.linear()) return "linear (1 inside the interval)";
   return f.k_high < 1 ? "below linear" : "above linear";
 }
 
@@ -44,7 +44,7 @@ void dressing_f8(ExperimentContext& ctx) {
   nlohmann::json series = nlohmann::json::array();
   for (const char* garment : {"shirt", "dress"})
     for (const auto& c : ctx.colliders(kAll)) {
-      std::vector<double> x, y, line_y;
+      std::vector<double> x, y;
       for (int n : sizes) {
         std::vector<std::string> sets{"garment.vertices=" + std::to_string(n), "stop.sew=false", "stop.settle_speed=0",
                                       "stop.max_iterations=" + std::to_string(iterations)};

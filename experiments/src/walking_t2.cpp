@@ -380,6 +380,7 @@ void walking_t2(ExperimentContext& ctx) {
   for (std::size_t i = 0; i < 2; ++i) {
     const auto& g = garments[i];
     const std::string scene = std::string("walking/") + g.name + ".toml";
+    const double fps = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
     std::vector<std::pair<std::string, RunResult>> charted;
     for (const WalkVariant& variant : walk_variants())
       for (const auto& c : ctx.colliders(variant.colliders)) {
@@ -408,7 +409,6 @@ void walking_t2(ExperimentContext& ctx) {
         t.row(walk_row(g.product, variant, c, r, paper::kWalkingT2[i]));
         // the cloth's clock and what holds the garment, from the is-cpu runs of both regimes on walk_07_01
         if (c == "is-cpu" && (main || (variant.row_suffix == "/papers" && r.frames))) {
-          const double fps = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
           if (main)
             clocks += std::string(clocks.empty() ? "" : "; ") + g.product + ": " +
                       (r.mesh.attached.empty() ? std::string("nothing attached")

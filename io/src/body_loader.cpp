@@ -231,8 +231,9 @@ void warn_facing(BodyModelImpl& m) {
 void normalise(BodyModelImpl& m) {
   const Box3 box = bounding_box(m.rest.positions);
   const Vec3 size = box.size();
+  const bool z_up = size.z() > size.y();
   Mat4d rot = Mat4d::Identity();
-  if (size.z() > size.y()) rot.topLeftCorner<3, 3>() = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).matrix();
+  if (z_up) rot.topLeftCorner<3, 3>() = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).matrix();
   double height = std::max(size.y(), size.z()), scale = 1;
   while (height * scale >= 5) scale /= 10;
   while (height * scale > 0 && height * scale < 0.5) scale *= 10;
@@ -249,7 +250,7 @@ void normalise(BodyModelImpl& m) {
   for (Eigen::Index v = 0; v < m.rest.positions.cols(); ++v)
     m.rest.positions.col(v) =
         (m.normalise * m.rest.positions.col(v).cast<double>().homogeneous()).head<3>().cast<Real>();
-  if (size.z() > size.y()) m.notes.push_back("its Z extent exceeds its Y extent: read as Z-up and turned +Y up");
+  if (z_up) m.notes.push_back("its Z extent exceeds its Y extent: read as Z-up and turned +Y up");
   if (scale != 1) {
     char text[96];
     std::snprintf(text, sizeof text, "scaled by %g to metres (height %.2f m)", scale, height * scale);

@@ -13,6 +13,8 @@ struct PowerFit {
   double a = 0, b = 0, k = 0;
   double k_low = 0, k_high = 0;
   bool at_grid_edge = false;  ///< the interval reaches the grid's end: the points do not bound the exponent
+  /// The points bound the exponent and 1 lies inside its interval.
+  bool linear() const { return !at_grid_edge && k_low <= 1 && 1 <= k_high; }
 };
 PowerFit power_fit(const std::vector<double>& x, const std::vector<double>& y, double confidence = 0.95);
 
