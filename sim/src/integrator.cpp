@@ -64,8 +64,10 @@ class ExplicitEuler : public Integrator {
 using Factory = std::unique_ptr<Integrator> (*)(const IntegratorParams&);
 
 const std::vector<std::pair<std::string, Factory>>& registry() {
-  static const std::vector<std::pair<std::string, Factory>> r{
-      {"explicit-euler", make_explicit_euler}, {"implicit-euler", make_implicit_euler}, {"rk45", make_rk45}};
+  static const std::vector<std::pair<std::string, Factory>> r{{"explicit-euler", make_explicit_euler},
+                                                              {"implicit-euler", make_implicit_euler},
+                                                              {"rk45", make_rk45},
+                                                              {"projective", make_projective}};
   return r;
 }
 

@@ -9,5 +9,6 @@ namespace clothbench {
 std::unique_ptr<Integrator> make_explicit_euler(const IntegratorParams& params);
 std::unique_ptr<Integrator> make_implicit_euler(const IntegratorParams& params);
 std::unique_ptr<Integrator> make_rk45(const IntegratorParams& params);
+std::unique_ptr<Integrator> make_projective(const IntegratorParams& params);
 
 }  // namespace clothbench

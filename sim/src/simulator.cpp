@@ -116,6 +116,7 @@ void validate(const Material& m, const SolverParams& p) {
   const IntegratorParams& i = p.integration;
   require(i.cg_tolerance > 0 && i.cg_tolerance < 1, "cg_tolerance", "in (0, 1)", i.cg_tolerance);
   require(i.cg_max_iterations >= 1, "cg_max_iterations", ">= 1", i.cg_max_iterations);
+  require(i.projective_iterations >= 1, "projective_iterations", ">= 1", i.projective_iterations);
   require(i.rk_tol_x > 0, "rk_tol_x", "> 0 m", i.rk_tol_x);
   require(i.rk_tol_v > 0, "rk_tol_v", "> 0 m/s", i.rk_tol_v);
 }
@@ -241,7 +242,7 @@ bool Simulator::step() {
   double cdr_ms = cdr.ms();
   Stopwatch cs;
   const ForceModel model = force_model();
-  model.eval(x_, v_, f_);
+  if (integrator_->needs_forces()) model.eval(x_, v_, f_);
   integrator_->advance(model, dt_, x_, f_, v_, drift_);
   // limits, seam caps and the response act on the velocity that moves the points over the step
   const bool drifts = drift_.cols() == x_.cols();

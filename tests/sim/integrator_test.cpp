@@ -52,19 +52,40 @@ TEST(Integrator, ExplicitEulerRoughlyConservesTheSpringEnergy) {
   EXPECT_LT((hi - lo) / e0, 0.03) << "lo " << lo << " hi " << hi << " e0 " << e0;
 }
 
-TEST(Integrator, ImplicitEulerDissipatesAndNeverGainsEnergy) {
-  Simulator sim = two_particles("implicit-euler", 1e-2f);
-  const double e0 = energy(sim);
-  double prev = e0;
-  for (int i = 0; i < 200 && sim.step(); ++i) {
-    const double e = energy(sim);
-    ASSERT_LE(e, prev * (1 + 1e-4)) << "iteration " << i;  // float round-off only
-    prev = e;
+// backward Euler (implicit Euler's linearised step, the projective solve's iterations) never gains energy and damps
+// the oscillation (omega dt = 0.28)
+TEST(Integrator, ImplicitStepsDissipateAndNeverGainEnergy) {
+  for (const std::string name : {"implicit-euler", "projective"}) {
+    Simulator sim = two_particles(name, 1e-2f);
+    const double e0 = energy(sim);
+    double prev = e0;
+    for (int i = 0; i < 200 && sim.step(); ++i) {
+      const double e = energy(sim);
+      ASSERT_LE(e, prev * (1 + 1e-4)) << name << " iteration " << i;  // float round-off only
+      prev = e;
+    }
+    EXPECT_LT(prev, 0.5 * e0) << name;
+    EXPECT_EQ(std::string(sim.integrator()), name);
   }
-  EXPECT_LT(prev, 0.5 * e0);  // backward Euler damps the oscillation (omega dt = 0.28)
-  EXPECT_EQ(std::string(sim.integrator()), "implicit-euler");
-  EXPECT_EQ(sim.integrator_stats().cg_unconverged, 0);
-  EXPECT_EQ(sim.integrator_stats().force_evaluations, 200);  // one per iteration
+  Simulator implicit = two_particles("implicit-euler", 1e-2f);
+  for (int i = 0; i < 200 && implicit.step(); ++i) {
+  }
+  EXPECT_EQ(implicit.integrator_stats().cg_unconverged, 0);
+  EXPECT_EQ(implicit.integrator_stats().force_evaluations, 200);  // one per iteration
+}
+
+// the projective solve is backward Euler: on a spring that does not turn, its local step's target does not depend
+// on the iterate, and one iteration gives the backward-Euler step e1 = (e0 + h v0) / (1 + h^2 omega^2) exactly
+TEST(Integrator, ProjectiveGivesTheBackwardEulerStep) {
+  for (int iterations : {1, 10}) {
+    IntegratorParams ip;
+    ip.projective_iterations = iterations;
+    Simulator sim = two_particles("projective", 1e-2f, ip);
+    ASSERT_TRUE(sim.step());
+    const double h = 1e-2, expected = kStretch / (1 + h * h * omega() * omega());
+    EXPECT_NEAR(extension(sim), expected, 1e-4 * kStretch) << iterations << " iterations";
+    EXPECT_EQ(sim.integrator_stats().cg_iterations, iterations);  // its local/global iterations
+  }
 }
 
 // |extension - analytic| at t = 1 s, with the sub-steps rk45 took
@@ -96,7 +117,8 @@ TEST(Integrator, UnknownNameIsRejectedNamingTheAcceptedValues) {
     two_particles("verlet", 1e-3f);
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("'verlet' (explicit-euler, implicit-euler, rk45)"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("'verlet' (explicit-euler, implicit-euler, rk45, projective)"),
+              std::string::npos)
         << e.what();
   }
   EXPECT_THROW(check_integrator("rk4"), std::invalid_argument);
@@ -134,8 +156,8 @@ Hanging hang(const std::string& integrator, Real dt, Real seconds) {
   return h;
 }
 
-TEST(Integrator, AllThreeSettleTheHangingSquare) {
-  for (const std::string name : {"explicit-euler", "implicit-euler", "rk45"}) {
+TEST(Integrator, EverySettlesTheHangingSquare) {
+  for (const std::string& name : integrator_names()) {
     const Hanging h = hang(name, 0, 4);
     std::printf("[ hanging ] %-14s dt %.3f ms: strain max %.4f, speed %.2g m/s\n", name.c_str(), 1e3 * h.dt, h.strain,
                 h.speed);
@@ -159,8 +181,19 @@ TEST(Integrator, ImplicitEulerIsStableAtTenTimesTheExplicitBound) {
   EXPECT_FLOAT_EQ(hang("implicit-euler", 0, 0).dt, 0.01f);  // its automatic step
 }
 
+TEST(Integrator, ProjectiveIsStableAtTenTimesTheExplicitBound) {
+  const Hanging h = hang("projective", 0.01f, 6);
+  std::printf("[ project ] dt 10 ms = %.1f x the Eq. 4 bound: strain max %.4f, speed %.2g m/s\n", h.dt / h.eq4,
+              h.strain, h.speed);
+  EXPECT_FLOAT_EQ(hang("projective", 0, 0).dt, 0.005f);  // its automatic step: the papers' clock
+  EXPECT_GE(h.dt, 10 * h.eq4);
+  ASSERT_FALSE(h.diverged);
+  EXPECT_LT(h.speed, 0.05f);
+  EXPECT_LT(h.strain, 0.11f);
+}
+
 TEST(Integrator, IdenticalRunsAreBitIdentical) {
-  for (const std::string name : {"explicit-euler", "implicit-euler", "rk45"}) {
+  for (const std::string& name : integrator_names()) {
     const Real dt = name == "explicit-euler" ? Real(0) : Real(0.005);
     const Hanging a = hang(name, dt, 0.5f), b = hang(name, dt, 0.5f);
     EXPECT_TRUE(a.x == b.x) << name;  // exact, not approximate

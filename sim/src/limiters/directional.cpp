@@ -31,7 +31,7 @@ class Directional final : public VelocitySweep<Directional> {
         held[static_cast<std::size_t>(front)] = 1, this->mark_changed(front, std::numeric_limits<Real>::infinity());
       return {na, na + target};
     }
-    return stretch_rules::directional(va, vb, cos_a, this->m_[a], this->m_[b], target, false);
+    return stretch_rules::directional(va, vb, cos_a, this->mass(a), this->mass(b), target, false);
   }
 };
 

@@ -18,7 +18,7 @@ class FollowTheLeader final : public VelocitySweep<FollowTheLeader> {
     const int la = level(a), lb = level(b);
     if (la >= 0 && (lb < 0 || la < lb)) return {va, va + target};  // a leads
     if (lb >= 0 && (la < 0 || lb < la)) return {vb - target, vb};  // b leads
-    return stretch_rules::average(va, vb, m_[a], m_[b], target);  // walking Eq. 5
+    return stretch_rules::average(va, vb, mass(a), mass(b), target);  // walking Eq. 5
   }
 };
 

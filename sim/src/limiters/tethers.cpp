@@ -30,7 +30,7 @@ class Tethers final : public VelocitySweep<Tethers> {
   }
 
   std::pair<Real, Real> split(int a, int b, const Vec3&, Real va, Real vb, Real target) const {
-    return stretch_rules::average(va, vb, m_[a], m_[b], target);  // walking Eq. 5
+    return stretch_rules::average(va, vb, mass(a), mass(b), target);  // walking Eq. 5
   }
 
  private:

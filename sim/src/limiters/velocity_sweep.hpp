@@ -49,6 +49,17 @@ class VelocitySweep : public Limiter {
   // hops from vertex i to the nearest held vertex over the springs and seam pairs (-1: out of reach of any)
   int level(int i) const { return order_level_[static_cast<std::size_t>(i)]; }
   void mark_changed(int i, Real change);
+  // a sewn point is one point to the limit: a merged group's mass is its members', it is held in place when one
+  // of them is attached, and a velocity change goes to every member (averaging them after each change would give
+  // each spring at a seam only a share of its change, and leave it stretched where two pull apart)
+  Real mass(int i) const {
+    const int g = group_of_[static_cast<std::size_t>(i)];
+    return g < 0 ? m_[i] : group_m_[static_cast<std::size_t>(g)];
+  }
+  bool fixed(int i) const {
+    const int g = group_of_[static_cast<std::size_t>(i)];
+    return g < 0 ? inv_m_[i] == 0 : group_m_[static_cast<std::size_t>(g)] == 0;
+  }
 
   // a point's position and velocity in the call under way
   Eigen::Map<const Vec3> x(int i) const { return Eigen::Map<const Vec3>(x_ + 3 * static_cast<std::ptrdiff_t>(i)); }
@@ -70,6 +81,8 @@ class VelocitySweep : public Limiter {
   void limit_spring(const SweptSpring& e);
   void stop_inward_contacts();
   void set_visit_bits(int i, std::size_t after);
+  void group_sewn_points();
+  void change(int i, const Vec3& dv, Real size);  // v += dv for i and the rest of its group
 
   std::vector<int> adj_start_, adj_;  // vertex -> neighbours over springs and seam pairs (CSR)
   std::vector<int> adj_edge_;         // beside adj_: its spring (index < springs) or seam pair (springs + index)
@@ -84,6 +97,8 @@ class VelocitySweep : public Limiter {
   std::size_t sweep_at_ = 0;               // the position in sweep_ under way (while visiting_bits_)
   int pass_ = 0;                           // the pass under way (0: none)
   long changes_ = 0;                       // velocity changes in that pass
+  std::vector<int> group_of_;              // per vertex: its merged group (state.merged), or -1
+  std::vector<Real> group_m_;              // per group: its members' mass (0: one of them is attached)
 };
 
 template <class Derived>
@@ -96,6 +111,35 @@ void VelocitySweep<Derived>::begin(LimitState& state) {
   const Contact* contacts = state.contacts.empty() ? nullptr : state.contacts.data();
   std::uint8_t* held = held_.data();
   for (Eigen::Index i = 0; i < nv; ++i) held[i] = inv_m_[i] == 0 || (contacts && contacts[i].hit);
+  group_sewn_points();
+}
+
+template <class Derived>
+void VelocitySweep<Derived>::group_sewn_points() {
+  const auto& groups = s_->merged;
+  group_of_.assign(static_cast<std::size_t>(s_->x.cols()), -1);
+  group_m_.assign(groups.size(), 0);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    bool attached = false;
+    for (int i : groups[g]) {
+      group_of_[static_cast<std::size_t>(i)] = static_cast<int>(g);
+      group_m_[g] += m_[i];
+      attached = attached || inv_m_[i] == 0;
+    }
+    if (attached) group_m_[g] = 0;
+  }
+  // the members start with one velocity (the group's)
+  move_as_one(groups, s_->m, s_->inv_m, s_->v, nullptr, [](int, Real) {});
+}
+
+template <class Derived>
+void VelocitySweep<Derived>::change(int i, const Vec3& dv, Real size) {
+  const int g = group_of_[static_cast<std::size_t>(i)];
+  if (g < 0) {
+    v(i) += dv, mark_changed(i, size);
+    return;
+  }
+  for (int j : s_->merged[static_cast<std::size_t>(g)]) v(j) += dv, mark_changed(j, size);
 }
 
 template <class Derived>
@@ -274,13 +318,15 @@ void VelocitySweep<Derived>::limit_spring(const SweptSpring& e) {
   const Real allowed = stretch_rules::allowed_length(len, max_len, params_.speed * dt_);
   const Real target = static_cast<const Derived*>(this)->target((allowed - d.dot(u)) / dt_);
   if (vb - va <= target) return;  // only further elongation is forbidden: a spring may shorten
-  if (inv_m_[a] == 0 && inv_m_[b] == 0) return;
+  const bool fixed_a = fixed(a), fixed_b = fixed(b);
+  const int g = group_of_[static_cast<std::size_t>(a)];
+  if ((fixed_a && fixed_b) || (g >= 0 && g == group_of_[static_cast<std::size_t>(b)])) return;
   auto [na, nb] = static_cast<Derived*>(this)->split(a, b, u, va, vb, target);
   // an attached end keeps its velocity and the free end follows it
-  if (inv_m_[a] == 0) na = va, nb = va + target;
-  if (inv_m_[b] == 0) nb = vb, na = vb - target;
-  if (na != va) v(a) += (na - va) * u, mark_changed(a, std::abs(na - va));
-  if (nb != vb) v(b) += (nb - vb) * u, mark_changed(b, std::abs(nb - vb));
+  if (fixed_a) na = va, nb = va + target;
+  if (fixed_b) nb = vb, na = vb - target;
+  if (na != va) change(a, (na - va) * u, std::abs(na - va));
+  if (nb != vb) change(b, (nb - vb) * u, std::abs(nb - vb));
 }
 
 }  // namespace clothbench

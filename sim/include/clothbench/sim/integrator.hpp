@@ -38,10 +38,11 @@ struct IntegratorStats {
   long force_evaluations = 0;  ///< f(x, v) evaluations
   long substeps = 0;           ///< accepted sub-steps (rk45), or steps
   long rejected = 0;           ///< rejected sub-steps (rk45)
-  long cg_iterations = 0;      ///< conjugate-gradient iterations as Eigen counts them (the converging one not)
+  long cg_iterations = 0;      ///< conjugate-gradient iterations as Eigen counts them (the converging one not), or
+                               ///< projective's local/global iterations
   long cg_unconverged = 0;     ///< solves that stopped at the iteration cap (implicit-euler)
-  double assemble_ms = 0;      ///< Jacobian and right-hand side (implicit-euler)
-  double solve_ms = 0;         ///< CG (implicit-euler)
+  double assemble_ms = 0;      ///< Jacobian and right-hand side (implicit-euler), local steps (projective)
+  double solve_ms = 0;         ///< CG (implicit-euler), back-substitutions (projective)
 };
 
 /// Settings of the integrators (SolverParams carries them; scenes/README.md documents the keys).
@@ -50,6 +51,7 @@ struct IntegratorParams {
   int cg_max_iterations = 100;
   Real rk_tol_x = 1e-5f;  ///< rk45: error per sub-step on positions [m]
   Real rk_tol_v = 1e-3f;  ///< rk45: error per sub-step on velocities [m/s]
+  int projective_iterations = 2;  ///< projective: local/global iterations per step
 };
 
 /// One iteration's update of velocities and positions: on return v holds the end-of-step velocities and
@@ -63,6 +65,8 @@ class Integrator {
   virtual std::unique_ptr<Integrator> clone() const = 0;
   /// The step used when dt is automatic, given the explicit one (dt_fraction x min(Eq. 4, Gershgorin)) [s].
   virtual Real automatic_dt(Real explicit_dt) const { return explicit_dt; }
+  /// Whether advance reads `f` (the Simulator skips evaluating it otherwise).
+  virtual bool needs_forces() const { return true; }
   /// Whether a given dt must respect dressing Eq. 4 (explicit Euler only).
   virtual bool bounded_by_eq4() const { return false; }
   /// f: the forces at (x, v), already evaluated. Attached vertices (1/m = 0) keep their velocity.
@@ -74,7 +78,7 @@ class Integrator {
   IntegratorStats stats_;
 };
 
-/// The registered names: "explicit-euler", "implicit-euler", "rk45".
+/// The registered names: "explicit-euler", "implicit-euler", "rk45", "projective".
 std::vector<std::string> integrator_names();
 /// Throws std::invalid_argument naming the accepted values unless `name` is registered.
 void check_integrator(const std::string& name);
