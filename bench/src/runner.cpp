@@ -723,7 +723,10 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   } catch (const std::invalid_argument& e) {
     throw InputError(located(scene.path, 0, e.what()));
   }
-  sim->set_collider(dresser ? dresser.get() : collider.get());
+  // the body is answered body.skin_mm thicker while dressing too (the animation wraps its colliders the same way)
+  BodyBetweenFrames dressing(dresser ? *dresser : *collider, scene.collider_options.tol,
+                             Real(scene.body.skin_mm * 1e-3));
+  sim->set_collider(&dressing);
   r.vertices = sim->mesh().vertex_count();
   r.query_points = r.vertices + (scene.solver.face_queries ? static_cast<int>(sim->mesh().quads.cols()) : 0);
   r.dt_s = sim->dt();

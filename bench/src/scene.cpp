@@ -236,6 +236,7 @@ void read_solver(Section s, SolverParams& p) {
   s.number("cg_max_iterations", p.integration.cg_max_iterations, 1, 1e5);
   s.number("rk_tol_x", p.integration.rk_tol_x, 1e-9, 1);
   s.number("rk_tol_v", p.integration.rk_tol_v, 1e-9, 100);
+  s.number("projective_iterations", p.integration.projective_iterations, 1, 1000);
   s.finish();
 }
 
@@ -421,7 +422,7 @@ std::string solver_config(const SolverParams& p) {
   w("bounds_margin", double(p.bounds_margin));  // not a scene key, but it decides divergence
   w("integrator", p.integrator)("cg_tolerance", double(p.integration.cg_tolerance));
   w("cg_max_iterations", p.integration.cg_max_iterations)("rk_tol_x", double(p.integration.rk_tol_x));
-  w("rk_tol_v", double(p.integration.rk_tol_v));
+  w("rk_tol_v", double(p.integration.rk_tol_v))("projective_iterations", p.integration.projective_iterations);
   return w.str();
 }
 

@@ -45,7 +45,7 @@ const std::vector<Deviation>& deviations() {
        {"body.move_between_frames=false"},
        false,
        true},
-      {"the moving body answered thicker (body.skin_mm: 4.5 mm for the walking skirt, 4 mm for the dress)",
+      {"the body answered thicker (body.skin_mm: 4.5 mm for the walking skirt, 4 mm for the dress; dressed and walking)",
        "no skin: contacts at the surface",
        {"body.skin_mm=0"},
        false,

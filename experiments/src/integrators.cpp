@@ -25,6 +25,7 @@ struct Solver {
   const char* regime;
   bool papers_limit = false;  // the papers' regime's velocity modification on the regime's springs
   int limit_passes = 0;       // the regime's passes of the velocity limit unless set
+  const char* skin = nullptr;  // body.skin_mm, when set
 };
 
 // the papers' regime's limit settings (apply_regime): at a step of milliseconds one pass of the
@@ -34,7 +35,8 @@ const char* const kPapersLimit[] = {"solver.limit=directional", "solver.limit_pa
 
 std::string regime_label(const Solver& s) {
   return std::string(s.regime) + (s.papers_limit ? " + papers' limit" : "") +
-         (s.limit_passes ? ", " + std::to_string(s.limit_passes) + " limit passes" : "");
+         (s.limit_passes ? ", " + std::to_string(s.limit_passes) + " limit passes" : "") +
+         (s.skin ? ", " + std::string(s.skin) + " mm skin" : "");
 }
 
 // the rows' overrides: garment size, solver, and the quick run's cap
@@ -44,6 +46,7 @@ std::vector<std::string> overrides(const ExperimentContext& ctx, const Garment& 
                                 std::string("solver.integrator=") + s.integrator};
   if (s.papers_limit) sets.insert(sets.end(), std::begin(kPapersLimit), std::end(kPapersLimit));
   if (s.limit_passes) sets.push_back("solver.limit_passes=" + std::to_string(s.limit_passes));
+  if (s.skin) sets.push_back(std::string("body.skin_mm=") + s.skin);
   if (ctx.quick()) sets.push_back("stop.max_iterations=40");
   return sets;
 }
@@ -131,11 +134,9 @@ void integrators(ExperimentContext& ctx) {
                                          {"trousers", "dressing/trousers.toml", 600, paper::kDressingT2[1].iterations}};
   // the papers' regime again with four limit passes instead of 32: the strain left when the Gauss-Seidel
   // sweep is not given the passes to converge
-  const Solver solvers[] = {{"explicit-euler", "stable"},
-                            {"explicit-euler", "papers"},
-                            {"explicit-euler", "papers", false, 4},
-                            {"implicit-euler", "stable", true},
-                            {"rk45", "stable"}};
+  const Solver solvers[] = {
+      {"explicit-euler", "stable"},       {"explicit-euler", "papers"}, {"explicit-euler", "papers", false, 4},
+      {"implicit-euler", "stable", true}, {"rk45", "stable"},           {"projective", "stable", false, 0, "1"}};
   MarkdownTable t({"garment",
                    "integrator",
                    "regime",
@@ -210,10 +211,13 @@ void integrators(ExperimentContext& ctx) {
       "committed: limit threshold 10 %, the skirt with face queries) at the papers' sizes, with each "
       "integrator (`solver.integrator`) in the stable regime (automatic dt: explicit Euler and rk45 at 0.9 x "
       "min(Eq. 4, Gershgorin) over the actual point masses, implicit Euler 10 ms with the papers' limit settings: "
-      "directional, 32 passes, again after the response) and explicit Euler in the "
+      "directional, 32 passes, again after the response; the projective solve, Liu et al. 2013 beyond the papers, "
+      "5 ms, 2 local/global iterations, the body answered 1 mm thicker, `body.skin_mm`: at steps of milliseconds a "
+      "step slides resting cloth a fraction of a millimetre into a curved surface) and explicit Euler in the "
       "papers' regime (`solver.regime = \"papers\"`: equal point masses, dt 5 ms, springs as soft as Eq. 4 "
       "and Gershgorin need at that dt, the stretch held by the directional velocity limit, 32 passes). The "
-      "stable regime's limit is the velocity limit (walking Eq. 5), 8 passes, run again after the collision response. Wall time is one thread, collider set-up "
+      "stable regime's limit is the velocity limit (walking Eq. 5), 8 passes, run again after the collision response. "
+      "Wall time is one thread, collider set-up "
       "included, until sewn and "
       "settled or the phase budgets (1 s + 2 s simulated) run out. The papers' iteration counts are their "
       "image-space rows (dressing Table 1 for shirt and dress, Table 2 for the skirt at 336 vertices and the "
@@ -221,7 +225,8 @@ void integrators(ExperimentContext& ctx) {
       "(dressing section 7), so ours/paper gives the sewing phase's ratio first and the whole run's (sew and drape "
       "to settled) second. A row \"4 limit passes\" runs the papers' regime with four limit passes instead of 32: "
       "the strain left when the limit's Gauss-Seidel sweep is not given the passes to converge, and what the "
-      "passes cost. The table gives each integrator's wall time to dressed as ms/iteration times iterations (CD&R = collider query and response, CS = forces, integration, limits and "
+      "passes cost. The table gives each integrator's wall time to dressed as ms/iteration times iterations (CD&R = "
+      "collider query and response, CS = forces, integration, limits and "
       "seaming, and of CS the velocity limits' passes alone). \"Largest strain at\" names the most stretched "
       "structural spring at the end: how high it is, "
       "and how many of its ends the body holds (in contact) or a seam joins, the measured reason a row misses "

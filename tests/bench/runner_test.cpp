@@ -119,7 +119,8 @@ TEST(Runner, TheFirstStaticSceneEndsDressedWithNoSkinShowing) {
 // a garment dressed on a walking body's pose mid-stride: the body stands still while it is sewn and draped,
 // so the cloth settles on it (given the clip's velocity at that pose, the contacts dragged it along and it
 // never settled). One limit pass, once a step: the cloth stretches round the open stride while it is sewn (the
-// walking scenes' 16 passes after the response hold it at its limit and the side seam stays open)
+// walking scenes' 16 passes after the response hold it at its limit and the side seam stays open). No skin: with the
+// scene's 4.5 mm answered while dressing, that one pass leaves the drape hopping off the skin unsettled
 TEST(Runner, AWalkingBodyStandsStillWhileTheGarmentIsDressedOnIt) {
   RunOptions quiet;
   quiet.progress = false;
@@ -127,7 +128,7 @@ TEST(Runner, AWalkingBodyStandsStillWhileTheGarmentIsDressedOnIt) {
       run_scene(load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/walking/skirt.toml",
                            {"garment.vertices=200", "collider.name=embree", "collider.dress_with=embree",
                             "body.dress_at_s=1.5", "body.start_s=1.5", "body.end_s=1.55", "solver.limit_passes=1",
-                            "solver.limit_after_response=false"}),
+                            "solver.limit_after_response=false", "body.skin_mm=0"}),
                 quiet);
   ASSERT_FALSE(r.divergence) << r.divergence->reason;
   EXPECT_TRUE(r.drape.reached);

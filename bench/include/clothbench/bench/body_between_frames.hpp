@@ -8,8 +8,9 @@
 /// carry a normal and a body velocity; a point the body reaches only before the pose (a retreating surface) is
 /// left as the inner collider answered it.
 ///
-/// A moving body is also answered `skin` thicker: every hit contact's depth is lowered by `skin`, so the response
-/// (push_out included) holds the cloth that far ahead of the surface it moves with: push_out then acts as
+/// The body is also answered `skin` thicker (in every phase: the runner wraps the dressing collider too): every
+/// hit contact's depth is lowered by `skin`, so the response (push_out included) holds the cloth that far ahead
+/// of the surface it moves with: push_out then acts as
 /// Durupinar's Eq. 4 (a point closer to the surface than a threshold is moved out along the normal) besides her
 /// Eq. 3 (a point beneath it is brought to it). Cloth resting on the surface
 /// with nothing between would be caught a fraction of a millimetre inside by the errors of the first-order

@@ -26,7 +26,7 @@ struct BodySpec {
                                       ///< second thread while the cloth steps through this one (Collider::prepare_body)
   int collision_triangles = 0;        ///< > 0: the colliders see a copy simplified to about this many triangles
                                       ///< (BodyModel::simplified); the oracle measures against the exact body
-  double skin_mm = 0;                 ///< while animated, the body is answered this much thicker (BodyBetweenFrames) [mm]
+  double skin_mm = 0;                 ///< the body is answered this much thicker in every phase (BodyBetweenFrames) [mm]
   std::string shape = "mesh";         ///< "mesh" or "sphere"
   Real radius = 0.25f;                ///< sphere radius [m]
   Vec3 center = Vec3(0, 0.5f, 0);     ///< sphere centre at t = 0 [m]
