@@ -8,10 +8,27 @@
 
 namespace clothbench {
 
-void ForceModel::eval(const Points3& x, const Points3& v, Points3& f) const {
+void ForceModel::external(const Points3& v, Points3& f) const {
   // gravity and viscous damping -C_vd v (dressing section 3) with C_vd = m_i c: per unit mass, so terminal
   // speeds g / c do not depend on the mesh resolution
   f = (gravity * m.transpose()).array() - damping * (v.array().rowwise() * m.transpose().array());
+}
+
+void ForceModel::react(Points3& f) const {
+  // walking Eq. 16: f_reaction = -C_fric f_t - f_n for colliding points pushed into the body
+  for (Eigen::Index i = 0; reaction && i < f.cols(); ++i) {
+    const Contact& c = contacts[static_cast<std::size_t>(i)];
+    if (!c.hit) continue;
+    const Vec3 fi = f.col(i);
+    const Real fn_len = fi.dot(c.normal);
+    if (fn_len >= 0) continue;
+    const Vec3 fn = fn_len * c.normal;
+    f.col(i) += -friction * (fi - fn) - fn;
+  }
+}
+
+void ForceModel::eval(const Points3& x, const Points3& v, Points3& f) const {
+  external(v, f);
   // springs: dressing Eq. 2, f = -k (|d| - l0) d/|d| on the first end
   for (Eigen::Index s = 0; s < mesh.springs.cols(); ++s) {
     const int a = mesh.springs(0, s), b = mesh.springs(1, s);
@@ -34,16 +51,7 @@ void ForceModel::eval(const Points3& x, const Points3& v, Points3& f) const {
     f.col(a) += fa;
     f.col(b) -= fa;
   }
-  // walking Eq. 16: f_reaction = -C_fric f_t - f_n for colliding points pushed into the body
-  for (Eigen::Index i = 0; reaction && i < x.cols(); ++i) {
-    const Contact& c = contacts[static_cast<std::size_t>(i)];
-    if (!c.hit) continue;
-    const Vec3 fi = f.col(i);
-    const Real fn_len = fi.dot(c.normal);
-    if (fn_len >= 0) continue;
-    const Vec3 fn = fn_len * c.normal;
-    f.col(i) += -friction * (fi - fn) - fn;
-  }
+  react(f);
 }
 
 namespace {

@@ -90,7 +90,6 @@ class Projective : public Integrator {
   bool stale(const ForceModel& model, Real h) const;
   void factor(const ForceModel& model, Real h);
   double weight(const ForceModel& model, const Link& l) const;
-  Points3 external_forces(const ForceModel& model, const Points3& v) const;
   Vec3 target(const ForceModel& model, const Link& l, const Vec3& d) const;
 
   IntegratorParams params_;
@@ -151,22 +150,6 @@ double Projective::weight(const ForceModel& model, const Link& l) const {
   return model.elastic_seams ? l.k : 0;
 }
 
-Points3 Projective::external_forces(const ForceModel& model, const Points3& v) const {
-  // gravity and damping as ForceModel::eval has them; the reaction force of walking Eq. 16 acts on these alone:
-  // on all of f it would cancel the springs' pull into the body at the step's start, which the solve then
-  // replaces by their pull at its end
-  Points3 f = (model.gravity * model.m.transpose()).array() -
-              model.damping * (v.array().rowwise() * model.m.transpose().array());
-  for (Eigen::Index i = 0; model.reaction && i < f.cols() && std::size_t(i) < model.contacts.size(); ++i) {
-    const Contact& c = model.contacts[std::size_t(i)];
-    const Real fn_len = f.col(i).dot(c.normal);
-    if (!c.hit || fn_len >= 0) continue;
-    const Vec3 fn = fn_len * c.normal, ft = f.col(i) - fn;
-    f.col(i) += -model.friction * ft - fn;
-  }
-  return f;
-}
-
 Vec3 Projective::target(const ForceModel& model, const Link& l, const Vec3& d) const {
   // Liu Eq. 12: the d closest to x_a - x_b with the spring's rest length; a seam: zero length within reach,
   // the gap less the reach beyond it (the force k (x_a - x_b - d) is then the capped k reach u)
@@ -181,8 +164,12 @@ void Projective::advance(const ForceModel& model, Real h, const Points3& x, cons
   Stopwatch watch;
   if (stale(model, h)) factor(model, h);
   const Eigen::Index nv = x.cols();
-  // Liu Eq. 5's inertial target y = x + h v + h^2 M^-1 f_ext
-  const Points3 f_ext = external_forces(model, v);
+  // Liu Eq. 5's inertial target y = x + h v + h^2 M^-1 f_ext, f_ext gravity and damping with walking Eq. 16 taken
+  // on them alone: on all of f it would cancel the springs' pull into the body at the step's start, which the
+  // solve then replaces by their pull at its end
+  Points3 f_ext;
+  model.external(v, f_ext);
+  model.react(f_ext);
   Points3 q = x + h * v;
   inertia_.resize(3, n_free_);
   for (Eigen::Index i = 0; i < nv; ++i) {

@@ -29,8 +29,12 @@ struct ForceModel {
   bool reaction = false;  ///< walking Eq. 16
   Real friction = 0;      ///< C_fric of Eq. 16
 
-  /// f(x, v) [N] (3 x nv).
+  /// f(x, v) [N] (3 x nv): external(), the springs and seams, then react().
   void eval(const Points3& x, const Points3& v, Points3& f) const;
+  /// Gravity and damping alone [N] (3 x nv).
+  void external(const Points3& v, Points3& f) const;
+  /// Walking Eq. 16 on f where the body holds a point that f pushes into it (when `reaction`).
+  void react(Points3& f) const;
 };
 
 /// Cumulative counts and times of an integrator [ms].
