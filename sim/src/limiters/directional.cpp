@@ -27,8 +27,7 @@ class Directional final : public VelocitySweep<Directional> {
       // a held rear point cannot catch up: the front follows it and is held in turn (our reading)
       const Real na = rear == a ? va : vb - target;
       const int front = rear == a ? b : a;
-      if (!held[static_cast<std::size_t>(front)])
-        held[static_cast<std::size_t>(front)] = 1, this->mark_changed(front, std::numeric_limits<Real>::infinity());
+      if (this->hold(front)) this->mark_changed(front, std::numeric_limits<Real>::infinity());
       return {na, na + target};
     }
     return stretch_rules::directional(va, vb, cos_a, this->mass(a), this->mass(b), target, false);

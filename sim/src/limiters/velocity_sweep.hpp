@@ -56,6 +56,15 @@ class VelocitySweep : public Limiter {
     const int g = group_of_[static_cast<std::size_t>(i)];
     return g < 0 ? m_[i] : group_m_[static_cast<std::size_t>(g)];
   }
+  // marks i held (with the rest of its group); false if it already was
+  bool hold(int i) {
+    if (held_[static_cast<std::size_t>(i)]) return false;
+    const int g = group_of_[static_cast<std::size_t>(i)];
+    if (g < 0) held_[static_cast<std::size_t>(i)] = 1;
+    else
+      for (int j : s_->merged[static_cast<std::size_t>(g)]) held_[static_cast<std::size_t>(j)] = 1;
+    return true;
+  }
   bool fixed(int i) const {
     const int g = group_of_[static_cast<std::size_t>(i)];
     return g < 0 ? inv_m_[i] == 0 : group_m_[static_cast<std::size_t>(g)] == 0;
@@ -120,13 +129,16 @@ void VelocitySweep<Derived>::group_sewn_points() {
   group_of_.assign(static_cast<std::size_t>(s_->x.cols()), -1);
   group_m_.assign(groups.size(), 0);
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    bool attached = false;
+    bool attached = false, held = false;
     for (int i : groups[g]) {
       group_of_[static_cast<std::size_t>(i)] = static_cast<int>(g);
       group_m_[g] += m_[i];
       attached = attached || inv_m_[i] == 0;
+      held = held || held_[static_cast<std::size_t>(i)];
     }
     if (attached) group_m_[g] = 0;
+    if (held)  // the body holds the sewn point where it holds one of its members
+      for (int i : groups[g]) held_[static_cast<std::size_t>(i)] = 1;
   }
   // the members start with one velocity (the group's)
   move_as_one(groups, s_->m, s_->inv_m, s_->v, nullptr, [](int, Real) {});
