@@ -152,7 +152,7 @@ std::string cheapest(const std::vector<Measured>& rows) {
     out += std::string("- ") + m.c->garment + ", " + (*m.c->clip ? m.c->clip : "static body") + ", " + m.s.regime +
            ": " +
            (best ? std::string("`") + best->s.limit + "`" + after_words(best->s) + ", " + std::to_string(best->s.passes) +
-                       " passes, " +
+                       (best->s.passes == 1 ? " pass, " : " passes, ") +
                        num(best->limit_ms, 3) + " ms a step (" + num(100 * best->share, 0) + " % of the step), strain " +
                        num(best->strain_pct, 1) + " %"
                  : std::string("no setting measured here meets every limit")) +

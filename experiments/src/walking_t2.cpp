@@ -334,7 +334,8 @@ std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const
                                settings(*all) + ")." + other_clip(*all) + " "
                          : "no row here meets every limit at every frame once strain counts, so none is a headline; ";
   if (best && best != all)
-    lead += "the fastest within inside, depth and crossings at every frame runs at " + num(best->fps, 1) +
+    lead += std::string(all ? "The" : "the") + " fastest within inside, depth and crossings at every frame runs at " +
+            num(best->fps, 1) +
             " frames/s (" + settings(*best) + (best->strain_misses ? ", over its limit" : "") + "); ";
   return "**Speed** (the dress with sleeves, " + std::to_string(r.vertices) +
          " vertices, is-cpu, walk_07_01, skinning, maps and cloth, the papers' clock with walking Eq. 5's limit and "
