@@ -646,6 +646,29 @@ Claim views_claim(ExperimentContext& ctx) {
   return c;
 }
 
+// the page's opening lines: how many claims, how their verdicts fall, which fail
+std::vector<std::string> summary(const std::vector<Claim>& list) {
+  // a verdict's kind: the first of these words in it
+  const char* kinds[] = {"holds", "fails", "does not hold", "untestable"};
+  int count[4] = {0, 0, 0, 0};
+  std::string failing;
+  for (const Claim& c : list) {
+    std::size_t first = std::string::npos, kind = 3;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t at = c.verdict.find(kinds[k]);
+      if (at < first) first = at, kind = k;
+    }
+    ++count[kind];
+    if (kind == 1 || kind == 2) failing += std::string(failing.empty() ? "" : "; ") + c.source + ": " + c.claim;
+  }
+  return {"The papers' claims tested here: " + std::to_string(list.size()) + ", each against this project's runs.",
+          "Ours: " + std::to_string(count[0]) + " hold, " + std::to_string(count[1]) + " fail, " +
+              std::to_string(count[2]) + " do not hold beyond the spread, " + std::to_string(count[3]) +
+              " are untestable here (by the first word of each verdict; the spread and the number of runs are in "
+              "the table).",
+          "Verdict, the claims that fail or do not hold: " + (failing.empty() ? std::string("none") : failing) + "."};
+}
+
 void claims(ExperimentContext& ctx) {
   const BodyModel model = load_body(kDebianHumanBody);
   std::vector<Claim> list{iterations_claim(ctx),
@@ -665,7 +688,8 @@ void claims(ExperimentContext& ctx) {
   ctx.write("claims", "The papers' claims against our measurements",
             "Each verdict rests on the numbers beside it and the linked experiment (run-level claims read the JSON "
             "those experiments wrote into this folder; the others are measured by this experiment).\n\n" +
-                t.str());
+                t.str(),
+            summary(list));
 }
 
 }  // namespace

@@ -135,4 +135,26 @@ inline std::string iterations_cell(const RunResult& r) {
   return std::to_string(r.iterations()) + " at " + num(1e3 * r.dt_s, 3) + " ms";
 }
 
+// a summary's account of one run: "N iterations to sew (T s), meets every limit" or what it misses
+inline std::string summary_run(const RunResult& r) {
+  if (r.divergence) return "diverged at iteration " + std::to_string(r.divergence->iteration);
+  const std::string sew =
+      r.sew.reached ? std::to_string(r.sew.iterations) + " iterations to sew (" + num(r.sew.wall_ms / 1e3, 2) + " s)"
+                    : "not sewn in " + std::to_string(r.sew.iterations) + " iterations";
+  const auto misses = limit_misses(r);
+  std::string verdict = misses.empty() ? "meets every limit" : "misses ";
+  for (std::size_t i = 0; i < misses.size(); ++i) verdict += (i ? ", " : "") + misses[i];
+  return sew + ", " + verdict;
+}
+
+// the colliders a summary sets against each other: the first image-space and the first object-space one built
+struct SummaryPair {
+  std::string is, os;
+  bool ok() const { return !is.empty() && !os.empty(); }
+};
+inline SummaryPair summary_pair(const ExperimentContext& ctx) {
+  const auto is = ctx.colliders({"is-cpu", "is-gl"}), os = ctx.colliders({"embree", "fcl", "vdb", "bbtree"});
+  return {is.empty() ? "" : is.front(), os.empty() ? "" : os.front()};
+}
+
 }  // namespace clothbench::paper_tables

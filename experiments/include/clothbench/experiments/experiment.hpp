@@ -74,8 +74,11 @@ class ExperimentContext {
   /// Adds the rows of a run() result named `name`, `extra` fields merged into each: with repetitions,
   /// one row per repetition and their aggregates (repetition_rows), else result_row(r, name).
   void add_run(const RunResult& r, const std::string& name, const nlohmann::json& extra = nlohmann::json::object());
-  /// Writes OUT/ID.md (title, definitions, machine, `body`) and OUT/ID.json (rows so far).
-  void write(const std::string& id, const std::string& title, const std::string& body);
+  /// Writes OUT/ID.md (title, `summary`, definitions, machine, `body`) and OUT/ID.json (rows so far). The
+  /// summary opens the page: at most five lines (the paper's figure, ours, the verdict, the row that answers
+  /// it), each computed from this run's data; more than five is a logic error.
+  void write(const std::string& id, const std::string& title, const std::string& body,
+             const std::vector<std::string>& summary = {});
   /// Renders a chart through experiments/plot/plot.py (matplotlib) into OUT/NAME.png; `spec` holds
   /// title, xlabel, ylabel, series [{label, x, y}], optional logx/logy. Returns false (and says
   /// why on stderr) when python3/matplotlib are missing.
