@@ -20,5 +20,6 @@ void add_run_command(CLI::App& app, Action& action);
 void add_reproduce_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);  // and merge
+void add_report_command(CLI::App& app, Action& action);
 
 }  // namespace clothbench::cli

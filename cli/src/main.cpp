@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   clothbench::cli::add_reproduce_command(app, action);
   clothbench::cli::add_compare_command(app, action);
   clothbench::cli::add_sweep_command(app, action);
+  clothbench::cli::add_report_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

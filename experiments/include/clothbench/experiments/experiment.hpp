@@ -37,6 +37,10 @@ inline std::vector<std::string> papers_detection(const std::string& collider) {
   return papers_image_space(collider);
 }
 
+/// The summary a results page opens with: "**Summary.**" and one "- " line each, then a blank line ("" for no
+/// lines). More than five lines is a logic error: a summary is the paper's figure, ours, the verdict.
+std::string markdown_summary(const std::vector<std::string>& lines);
+
 /// What an experiment may use: cached scene runs, output writers, the options of the command.
 class ExperimentContext {
  public:
