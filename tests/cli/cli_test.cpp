@@ -11,6 +11,8 @@
 #include <regex>
 #include <sstream>
 
+#include <Eigen/Core>
+
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/runner.hpp"
@@ -277,6 +279,27 @@ TEST_F(Cli, ReproduceHelpListsEveryExperimentOfTheRegistry) {
   }
 }
 
+// the placement preview: the garment placed on a body as a run places it, measured against the exact body and drawn
+TEST_F(Cli, GarmentOnABodyReportsHowItStartsAndDrawsIt) {
+  const std::string log = (dir_ / "log").string(), png = (dir_ / "placed.png").string();
+  const std::string skirt = kScenes + "garments/skirt.pattern";
+  ASSERT_EQ(clothbench("garment " + skirt + " --vertices 300 --on debian:human --json", log), 0) << read(log);
+  const auto doc = nlohmann::json::parse(read(log).substr(read(log).find('{')));
+  const auto& p = doc.at("placement");
+  EXPECT_EQ(p.at("body"), "debian:human");
+  EXPECT_LE(p.at("inside_pct").get<double>(), 1.0);  // the shipped skirt is placed around the body
+  EXPECT_LE(p.at("touching").get<long>(), doc.at("vertices").get<long>());
+  EXPECT_EQ(p.at("attached").get<long>(), doc.at("attached").get<long>());
+  EXPECT_GE(p.at("attached_far").get<long>(), 0);
+  ASSERT_EQ(clothbench("garment " + skirt + " --vertices 300 --on debian:human --png " + png, log), 0) << read(log);
+  EXPECT_NE(read(log).find("inside "), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find("picture " + png), std::string::npos) << read(log);
+  EXPECT_GT(fs::file_size(png), 1000u);
+  // a body that is not there is bad input, named
+  EXPECT_EQ(clothbench("garment " + skirt + " --on " + (dir_ / "nobody.obj").string(), log), 2);
+  EXPECT_NE(read(log).find("nobody.obj"), std::string::npos) << read(log);
+}
+
 TEST_F(Cli, CollidersPrintsAnAlignedTableOrJson) {
   const std::string log = (dir_ / "log").string();
   const auto colliders = clothbench::all_colliders();
@@ -420,6 +443,124 @@ TEST_F(Cli, SweepShardsKeepTheGoodPointsAndReportTheFailedOne) {
   EXPECT_NE(read(log).find("shard 1/2: 1 to run"), std::string::npos) << read(log);
   EXPECT_EQ(clothbench("sweep " + kScenes + "dressing/skirt.toml --out " + out, log), 2) << read(log);
   EXPECT_NE(read(log).find("holds another sweep"), std::string::npos) << read(log);
+}
+
+// a user's own sweep as the built-in experiments' page: one row per configuration (the median of its repetitions and
+// their spread), the summary first, the JSON of the rows; a file of run --json too; a document of no runs is bad input
+TEST_F(Cli, ReportOfAUsersSweepOpensWithItsSummaryAndKeepsEachConfiguration) {
+  if (!fs::exists(clothbench::kDebianHumanBody)) GTEST_SKIP() << clothbench::kDebianHumanBody << " missing";
+  const std::string sweep = (dir_ / "sweep").string(), report = (dir_ / "report").string();
+  const std::string log = (dir_ / "log").string();
+  ASSERT_EQ(clothbench("sweep " + kScenes +
+                           "dressing/skirt.toml --collider is-cpu,embree --set "
+                           "garment.vertices=100,120 --set stop.max_iterations=5 --repetitions 2 --jobs 2 --out " +
+                           sweep,
+                       log),
+            0)
+      << read(log);
+  ASSERT_EQ(clothbench("report " + sweep + " --out " + report, log), 0) << read(log);
+  const std::string md = read(report + "/sweep.md");
+  EXPECT_EQ(line_starting(md, "**Summary"), "**Summary.**") << md;
+  EXPECT_NE(md.find("- 4 configurations from " + sweep + ", 8 runs in all: "), std::string::npos) << md;
+  EXPECT_NE(md.find("fewer than five runs per configuration"), std::string::npos) << md;
+  for (const char* name : {"skirt/is-cpu/garment.vertices=100", "skirt/embree/garment.vertices=120"})
+    EXPECT_NE(md.find(std::string("| ") + name), std::string::npos) << name << "\n" << md;
+  const auto doc = nlohmann::json::parse(read(report + "/sweep.json"));
+  EXPECT_EQ(doc["benchmarks"].size(), 4u);
+  // run --json's file: one configuration of three runs
+  const std::string json = (dir_ / "r.json").string();
+  ASSERT_EQ(clothbench("run --quiet " + kScenes +
+                           "dressing/skirt.toml --set garment.vertices=100 "
+                           "stop.max_iterations=5 --repetitions 3 --json " +
+                           json,
+                       log),
+            0)
+      << read(log);
+  ASSERT_EQ(clothbench("report " + json + " --out " + report, log), 0) << read(log);
+  EXPECT_NE(read(report + "/sweep.md").find("- 1 configuration from " + json + ", 3 runs in all"), std::string::npos)
+      << read(report + "/sweep.md");
+  std::ofstream(dir_ / "empty.json") << "{\"benchmarks\": []}";
+  EXPECT_EQ(clothbench("report " + (dir_ / "empty.json").string() + " --out " + report, log), 2);
+  EXPECT_NE(read(log).find("no run rows"), std::string::npos) << read(log);
+}
+
+// the shipped rest body written again as a user's scan might come: vertex x, y, z mapped by `f`
+void rewrite_body(const std::string& out, Eigen::Matrix3d f) {
+  std::ifstream in(clothbench::data_path("body/mh_female_walk_rest.obj"));
+  std::ofstream o(out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("v ", 0) != 0) {
+      o << line << "\n";
+      continue;
+    }
+    std::istringstream v(line.substr(2));
+    Eigen::Vector3d p;
+    v >> p.x() >> p.y() >> p.z();
+    const Eigen::Vector3d q = f * p;
+    o << "v " << q.x() << " " << q.y() << " " << q.z() << "\n";
+  }
+}
+
+// A user's journey from the README alone: their own body (a scan in centimetres, Z up; one turned to face +X is
+// warned about), their own pattern, its placement checked before a run, a sweep over two colliders, the report of it,
+// and a change that loses accuracy caught by compare
+TEST_F(Cli, AUsersOwnBodyAndPatternRunSweepReportAndCompare) {
+  if (!fs::exists(clothbench::data_path("body/mh_female_walk_rest.obj"))) GTEST_SKIP() << "no rest body";
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  const std::string log = file("log");
+  Eigen::Matrix3d z_up_cm, facing_x;
+  z_up_cm << 100, 0, 0, 0, 0, -100, 0, 100, 0;  // (x, y, z) -> (x, -z, y) in cm
+  facing_x << 0, 0, 1, 0, 1, 0, -1, 0, 0;       // turned a quarter round Y
+  rewrite_body(file("scan.obj"), z_up_cm);
+  rewrite_body(file("turned.obj"), facing_x);
+  ASSERT_EQ(clothbench("body " + file("scan.obj"), log), 0) << read(log);
+  EXPECT_NE(read(log).find("turned +Y up"), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find("scaled by"), std::string::npos) << read(log);
+  ASSERT_EQ(clothbench("body " + file("turned.obj"), log), 0) << read(log);
+  EXPECT_NE(read(log).find("may face +-X"), std::string::npos) << read(log);
+  // their pattern: a straight-sided skirt, its waist attached
+  std::ofstream(file("aline.pattern")) << "garment aline\n"
+                                          "panel front\n  place anchor 0.5 0.309 0.36 offset 0 0 20 wrap 20\n"
+                                          "  start -28 0\n  edge hem line 28 0\n  edge right line 21 54\n"
+                                          "  edge waist line -21 54\n  edge left close\n  attach waist\nend\n"
+                                          "panel back\n  place anchor 0.5 0.309 0.36 offset 0 0 -20 yaw 180 wrap 20\n"
+                                          "  start -28 0\n  edge hem line 28 0\n  edge right line 21 54\n"
+                                          "  edge waist line -21 54\n  edge left close\n  attach waist\nend\n"
+                                          "seam front.right back.left\nseam front.left back.right\n";
+  ASSERT_EQ(
+      clothbench("garment " + file("aline.pattern") + " --vertices 200 --on " + file("scan.obj") + " --json", log), 0)
+      << read(log);
+  const auto placed = nlohmann::json::parse(read(log).substr(read(log).find('{')))["placement"];
+  EXPECT_LE(placed["inside_pct"].get<double>(), 1.0) << placed;
+  EXPECT_GT(placed["attached"].get<long>(), 0) << placed;
+  const auto scene = [&](const std::string& name, int vertices) {
+    std::ofstream(file(name)) << "[scene]\nname = \"aline\"\n[body]\nfile = \"scan.obj\"\n[[garment]]\nfile = "
+                                 "\"aline.pattern\"\nvertices = "
+                              << vertices
+                              << "\n[solver]\nthreshold = 0.10\n[stop]\nsew_max_s = 0.6\ndrape_max_s = 0.4\n";
+  };
+  scene("aline.toml", 600);
+  scene("aline-coarse.toml", 150);  // the change under test: a coarser mesh, to run faster
+  for (const char* s : {"aline", "aline-coarse"})
+    ASSERT_EQ(clothbench("sweep " + file(std::string(s) + ".toml") +
+                             " --collider is-cpu,embree --repetitions 2 "
+                             "--jobs 2 --out " +
+                             file(std::string(s) + "-sweep"),
+                         log),
+              0)
+        << read(log);
+  ASSERT_EQ(clothbench("report " + file("aline-sweep") + " --out " + file("report"), log), 0) << read(log);
+  const std::string md = read(file("report/sweep.md"));
+  EXPECT_NE(md.find("- 2 configurations from "), std::string::npos) << md;
+  EXPECT_NE(md.find("- The fastest meeting every limit: aline/"), std::string::npos) << md;
+  EXPECT_EQ(clothbench("compare " + file("aline-sweep/merged.json") + " " + file("aline-coarse-sweep/merged.json") +
+                           " --pair-by collider",
+                       log),
+            1)
+      << read(log);
+  EXPECT_NE(read(log).find("ACCURACY REGRESSION collider=is-cpu: stopped meeting the accuracy limits"),
+            std::string::npos)
+      << read(log);
 }
 
 // the verdict against the accuracy limits: in the summary (never "converged yes" alone), in the
