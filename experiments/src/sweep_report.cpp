@@ -174,6 +174,11 @@ void write_sweep_report(const nlohmann::json& doc, const std::string& source, co
     }
   }
   const std::size_t failed = doc.contains("failed") && doc["failed"].is_array() ? doc["failed"].size() : 0;
+  // a log time axis only where the times span a decade: over a narrower range its labels run together
+  double lo = 0, hi = 0;
+  for (const auto& c : configs)
+    if (!diverged(c.median)) lo = lo > 0 ? std::min(lo, ms(c.median)) : ms(c.median), hi = std::max(hi, ms(c.median));
+  const bool logx = lo > 0 && hi > 10 * lo;
   ExperimentContext ctx(out, false, 1);  // for its charts
   std::string pictures;
   for (const Chart& ch : charts) {
@@ -183,7 +188,7 @@ void write_sweep_report(const nlohmann::json& doc, const std::string& source, co
     if (!series.empty() && ctx.chart(ch.name, {{"title", std::string(ch.ylabel) + " against time"},
                                                {"xlabel", "ms per iteration (median)"},
                                                {"ylabel", ch.ylabel},
-                                               {"logx", true},
+                                               {"logx", logx},
                                                {"series", series}}))
       pictures += "![" + std::string(ch.name) + "](" + ch.name + ".png) ";
   }
