@@ -237,6 +237,15 @@ double row_time_ms(const nlohmann::json& row, const char* key) {
   return row.at(key).get<double>() / unit_per_ms(row.value("time_unit", std::string("ms")));
 }
 
+std::string row_limit_misses(const nlohmann::json& row, const std::string& separator) {
+  std::string out;
+  const auto it = row.find("limit_misses");
+  if (it != row.end() && it->is_array())
+    for (const auto& m : *it)
+      if (m.is_string()) out += (out.empty() ? "" : separator) + m.get<std::string>();
+  return out;
+}
+
 namespace {
 
 // an aggregate row of Google Benchmark's repetitions: name_AGG, run_type aggregate

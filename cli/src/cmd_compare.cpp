@@ -58,9 +58,7 @@ Accuracy read_accuracy(const nlohmann::json& row) {
   const auto flag = [&](const char* key) { return row.contains(key) && row[key].is_number() && row[key].get<double>() != 0; };
   a.diverged = flag("diverged");
   a.meets = !row.contains("meets_limits") || flag("meets_limits");
-  if (row.contains("limit_misses") && row["limit_misses"].is_array())
-    for (const auto& m : row["limit_misses"])
-      if (m.is_string()) a.misses += (a.misses.empty() ? "" : ", ") + m.get<std::string>();
+  a.misses = row_limit_misses(row, ", ");
   for (const Figure& f : kFigures)
     if (row.contains(f.key) && row[f.key].is_number()) a.figures[f.key] = row[f.key].get<double>();
   return a;

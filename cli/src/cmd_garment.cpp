@@ -235,7 +235,7 @@ int run_garment(const GarmentOptions& o) {
   const BodyFrame body = load_body(o.on).rest();
   ClothMesh cloth;
   try {
-    cloth = build_garment(pat, mo, body);
+    cloth = place_garment(m, pat, body);
   } catch (const std::invalid_argument& e) {
     throw InputError(located(o.file, 0, e.what()));
   }

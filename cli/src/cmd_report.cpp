@@ -19,9 +19,8 @@ struct ReportArgs {
 int report(const ReportArgs& a) {
   const bool folder = std::filesystem::is_directory(a.input);
   const nlohmann::json doc = folder ? merge_sweeps({a.input}, false) : read_json_file(a.input);
-  write_sweep_report(doc, a.input, a.out);
-  const auto configs = report_configurations(doc);
-  std::printf("report of %zu configuration(s) from %s: %s/sweep.md, %s/index.html\n", configs.size(), a.input.c_str(),
+  const std::size_t configs = write_sweep_report(doc, a.input, a.out);
+  std::printf("report of %zu configuration(s) from %s: %s/sweep.md, %s/index.html\n", configs, a.input.c_str(),
               a.out.c_str(), a.out.c_str());
   return 0;
 }

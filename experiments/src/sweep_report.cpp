@@ -40,11 +40,8 @@ std::string verdict(const nlohmann::json& row) {
     return "diverged at iteration " + num(field(row, "diverged_iteration"), 0) + " (" + text(row, "diverged_reason") +
            ")";
   if (meets(row)) return "yes";
-  std::string out = "no";
-  if (row.contains("limit_misses") && row["limit_misses"].is_array())
-    for (const auto& m : row["limit_misses"])
-      if (m.is_string()) out += (out == "no" ? ": " : "; ") + m.get<std::string>();
-  return out;
+  const std::string misses = row_limit_misses(row, "; ");
+  return misses.empty() ? "no" : "no: " + misses;
 }
 
 std::string describe(const ReportConfiguration& c) {
@@ -137,7 +134,7 @@ std::vector<ReportConfiguration> report_configurations(const nlohmann::json& doc
   return out;
 }
 
-void write_sweep_report(const nlohmann::json& doc, const std::string& source, const std::string& out) {
+std::size_t write_sweep_report(const nlohmann::json& doc, const std::string& source, const std::string& out) {
   const std::vector<ReportConfiguration> configs = report_configurations(doc);
   MarkdownTable t({"configuration", "collider", "vertices", "runs", "ms/iteration (median)", "spread [%]", "total [s]",
                    "frames/s", "inside [%]", "depth max [mm]", "crossings [%]", "seam gap [mm]", "strain max [%]",
@@ -215,6 +212,7 @@ void write_sweep_report(const nlohmann::json& doc, const std::string& source, co
   write_text_file(ctx.path("sweep.md"), md);
   write_text_file(ctx.path("sweep.json"), nlohmann::json{{"context", context}, {"benchmarks", medians}}.dump(2) + "\n");
   write_html_report(out, false);
+  return configs.size();
 }
 
 }  // namespace clothbench

@@ -52,6 +52,8 @@ void set_times(nlohmann::json& row, double real_ms, double cpu_ms, std::string u
 
 /// A row's real_time or cpu_time (`key`) in ms, read in its time_unit.
 double row_time_ms(const nlohmann::json& row, const char* key);
+/// A row's limit_misses as the run wrote them, joined by `separator`; "" when it has none.
+std::string row_limit_misses(const nlohmann::json& row, const std::string& separator);
 
 /// Google Benchmark's layout for repetitions: every run's row (run_name, repetitions, repetition_index)
 /// followed by the aggregates mean, median, stddev (aggregate_unit "time") and cv (a fraction,

@@ -2,6 +2,7 @@
 /// `clothbench report`: the page the built-in experiments write (a summary first, the table, charts of time against
 /// each accuracy figure, the HTML page) for any Google Benchmark document of run rows: a user's `sweep` (merged),
 /// `merge`'s file or `run --json`'s.
+#include <cstddef>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -22,7 +23,8 @@ struct ReportConfiguration {
 std::vector<ReportConfiguration> report_configurations(const nlohmann::json& doc);
 
 /// Writes OUT/sweep.md (summary, table, failed points), OUT/sweep.json (the median rows), the charts
-/// OUT/sweep-{inside,crossings,strain}.png and OUT/index.html; `source` names the input on the page.
-void write_sweep_report(const nlohmann::json& doc, const std::string& source, const std::string& out);
+/// OUT/sweep-{inside,crossings,strain}.png and OUT/index.html; `source` names the input on the page. Returns the
+/// number of configurations.
+std::size_t write_sweep_report(const nlohmann::json& doc, const std::string& source, const std::string& out);
 
 }  // namespace clothbench
