@@ -194,16 +194,26 @@ std::string build_of(const nlohmann::json& context) {
   return b;
 }
 
-// one folder's rows into `out`, its failed and missing points into `failed`
+// one folder's rows into `out`, its failed and missing points into `failed`; `from` is the folder each row name
+// came from: two folders with a row of one name would give rows nobody can tell apart (compare and report match
+// rows by name)
 void merge_folder(const std::string& dir, nlohmann::json& out, nlohmann::json& failed, std::set<std::string>& builds,
-                  nlohmann::json& context) {
+                  nlohmann::json& context, std::map<std::string, std::string>& from) {
   const SweepGrid grid = SweepGrid::from_json(read_json_file((fs::path(dir) / "sweep.json").string()));
   for (const SweepPoint& p : expand_grid(grid)) {
     if (fs::exists(point_path(dir, p)) && point_done(dir, p)) {
       const nlohmann::json doc = read_json_file(point_path(dir, p));
       builds.insert(build_of(doc["context"]));
       if (context.is_null()) context = doc["context"];
-      for (const auto& row : doc["benchmarks"]) out.push_back(row);
+      for (const auto& row : doc["benchmarks"]) {
+        const std::string name = row.value("name", "");
+        const auto [it, first] = from.emplace(name, dir);
+        if (!first && it->second != dir)
+          throw InputError("merge: " + dir + " and " + it->second + " both hold the point '" + name +
+                           "': rows of one name cannot be told apart (merge the two sweeps separately, or run "
+                           "one of them from a scene of another name)");
+        out.push_back(row);
+      }
     } else if (fs::exists(point_error_path(dir, p))) {
       nlohmann::json e = read_json_file(point_error_path(dir, p));
       e["folder"] = dir;
@@ -223,9 +233,13 @@ nlohmann::json merge_sweeps(const std::vector<std::string>& dirs, bool allow_mix
   nlohmann::json rows = nlohmann::json::array(), failed = nlohmann::json::array(), context;
   std::set<std::string> builds;
   nlohmann::json grids = nlohmann::json::array();
+  std::map<std::string, std::string> from;
+  std::set<std::string> seen;
   for (const std::string& dir : dirs) {
     if (!fs::exists(fs::path(dir) / "sweep.json")) throw InputError(dir + ": not a sweep folder (no sweep.json)");
-    merge_folder(dir, rows, failed, builds, context);
+    if (!seen.insert(fs::weakly_canonical(dir).string()).second)
+      throw InputError("merge: " + dir + " is named twice (its rows would count twice)");
+    merge_folder(dir, rows, failed, builds, context, from);
     grids.push_back(read_json_file((fs::path(dir) / "sweep.json").string()));
   }
   if (builds.size() > 1 && !allow_mixed) {

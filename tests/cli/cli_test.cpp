@@ -416,7 +416,8 @@ TEST_F(Cli, RunWithRepetitionsWritesEveryRunAndTheAggregates) {
 }
 
 // a sweep in shards: every point exactly once over the shards, a failing point reported with its error and
-// exit status and the others kept, a re-run skipping what is done, merge joining the shards' folder
+// exit status and the others kept, a re-run skipping what is done, merge joining the shards' folder (and refusing
+// rows it could not tell apart)
 TEST_F(Cli, SweepShardsKeepTheGoodPointsAndReportTheFailedOne) {
   if (!fs::exists(clothbench::kDebianHumanBody)) GTEST_SKIP() << clothbench::kDebianHumanBody << " missing";
   const std::string out = (dir_ / "sweep").string(), log = (dir_ / "log").string();
@@ -436,6 +437,12 @@ TEST_F(Cli, SweepShardsKeepTheGoodPointsAndReportTheFailedOne) {
   EXPECT_EQ(doc["benchmarks"].size(), 2u);
   ASSERT_EQ(doc["failed"].size(), 1u);
   EXPECT_EQ(doc["failed"][0]["index"], 1);
+  // one folder named twice, or two folders holding points of one name, would give rows nobody can tell apart
+  EXPECT_EQ(clothbench("merge " + out + " " + out + " --out " + merged, log), 2) << read(log);
+  EXPECT_NE(read(log).find("is named twice"), std::string::npos) << read(log);
+  fs::copy(out, dir_ / "sweep-copy", fs::copy_options::recursive);
+  EXPECT_EQ(clothbench("merge " + out + " " + (dir_ / "sweep-copy").string() + " --out " + merged, log), 2) << read(log);
+  EXPECT_NE(read(log).find("both hold the point 'skirt/is-cpu/garment.vertices=100"), std::string::npos) << read(log);
   // done points are not run again; a folder of another grid is refused
   EXPECT_EQ(clothbench(grid + " --shard 0/2", log), 0) << read(log);
   EXPECT_NE(read(log).find("shard 0/2: 0 to run"), std::string::npos) << read(log);
