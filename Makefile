@@ -37,7 +37,7 @@ test: build
 perf-baseline: build
 	python3 perf/measure.py --workloads $(BUILD)/bin/clothbench_perf_workloads accept --baseline results/ci-baseline.json
 
-# the GPU-relevant benchmarks in one command, for a machine with a GPU (README.md, "On a GPU"): map rendering per
+# the GPU-relevant benchmarks in one command, for a machine with a GPU (docs/gpu.md): map rendering per
 # renderer (OSMesa, EGL, CPU) at 320^2 / 512^2 / 1024^2 and the walking dress's 6 views x 5 layers, query batches
 # (CPU, and is-egl on its device), and both walking garments of walking-t2 (skirt 672 v,
 # dress with sleeves 2,300 v) with is-egl and is-cpu (every frame measured), each also with the next frame prepared
