@@ -1,8 +1,13 @@
 #!/usr/bin/env python3
 """results/index.html: every experiment's tables, charts and claims in one static page, with a 3-D viewer.
 
+Answers first (answers.py: the fastest configuration within every accuracy limit, static and walking, on the CPU
+and on a GPU, with its row and spread), then the claims with their verdicts, then every experiment's tables and
+charts, the interactive Pareto charts and the 3-D viewer.
+
 Run by `clothbench reproduce` after the experiments (also on its own: make_report.py RESULTS_DIR). It reads
-only what the experiments wrote into RESULTS_DIR (README.md, ID.md, ID.json, the charts, pictures/*.glb) and
+only what the experiments wrote into RESULTS_DIR (README.md, ID.md, ID.json, the charts, pictures/*.glb, the run
+documents under gpu-*/) and
 writes RESULTS_DIR/index.html plus RESULTS_DIR/web/: the page's script and style (from report/ in the source
 tree), three.js r111 and Chart.js 3 copied from Debian's libjs-three and libjs-chart.js with their copyright
 files, and each glb as a script (web/models/NAME.js, base64) so that the page works from file:// (browsers
@@ -16,6 +21,9 @@ import re
 import shutil
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import answers  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 # Debian's files: (source, name under web/)
@@ -81,7 +89,8 @@ def table(lines):
     head = cells(lines[0])
     verdict_col = [i for i, h in enumerate(head) if h in ("verdict", "meets the limits", "meets the limits (every frame)")]
     rows = [cells(l) for l in lines[2:]]
-    out = ['<div class="table"><table class="sortable"><thead><tr>']
+    # a table of many columns in a smaller font, so that it fits 1,300 px without scrolling
+    out = ['<div class="table"><table class="sortable%s"><thead><tr>' % (" many" if len(head) >= 16 else "")]
     out += ['<th title="sort">%s</th>' % inline(h) for h in head]
     out.append("</tr></thead><tbody>")
     for r in rows:
@@ -195,19 +204,20 @@ def models(results, web):
 
 
 def screenshots(results):
-    """report-viewer.png (the top of the page: the 3-D viewers) and report-page.png (more of it), by headless
-    Chromium where it is installed; a clip still plays at the time it is taken."""
+    """report-viewer.png (the 3-D viewers, moved to the top by the page's #viewer-first) and report-page.png (the
+    top of the page as it opens: the answers, then the claims), by headless Chromium where it is installed; a clip
+    still plays at the time it is taken."""
     binary = shutil.which("chromium") or shutil.which("chromium-browser")
     if not binary:
         print("make_report.py: no chromium, no screenshots (apt-get install chromium)")
         return
     url = "file://" + os.path.abspath(os.path.join(results, "index.html"))
     profile = os.path.join(results, ".chromium-profile")
-    for name, height in (("report-viewer.png", 900), ("report-page.png", 2400)):
+    for name, height, hash_ in (("report-viewer.png", 900, "#viewer-first"), ("report-page.png", 2400, "")):
         cmd = [binary, "--headless=new", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
                "--use-angle=swiftshader", "--hide-scrollbars", "--force-device-scale-factor=1",
                "--window-size=1300,%d" % height, "--user-data-dir=" + profile, "--virtual-time-budget=6000",
-               "--screenshot=" + os.path.join(results, name), url]
+               "--screenshot=" + os.path.join(results, name), url + hash_]
         try:
             subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=120, check=True)
         except (subprocess.SubprocessError, OSError) as e:
@@ -237,9 +247,46 @@ def main():
     pareto = pareto_data(results)
 
     body = []
-    nav = ['<a href="#viewer">3-D viewer</a>'] + (['<a href="#pareto-interactive">Pareto (interactive)</a>'] if pareto else [])
-    nav += ['<a href="#%s">%s</a>' % (i, i) for i, _ in entries]
+    # answers first, then the claims with their verdicts, then every experiment's tables, the interactive charts
+    # and the 3-D viewer
+    claims = [e for e in entries if e[0] == "claims"]
+    ordered = claims + [e for e in entries if e[0] != "claims"]
+    nav = ['<a href="#answers">answers</a>'] + ['<a href="#claims">claims</a>' for _ in claims]
+    nav += ['<a href="#index">experiments</a>'] + ['<a href="#%s">%s</a>' % (i, i) for i, _ in entries if i != "claims"]
+    nav += (['<a href="#pareto-interactive">Pareto (interactive)</a>'] if pareto else []) + ['<a href="#viewer">3-D viewer</a>']
     body.append('<nav>%s</nav>' % " ".join(nav))
+    body.append(answers.section(results))
+
+    def experiment_section(i, title):
+        text = open(os.path.join(results, i + ".md"), encoding="utf-8").read()
+        links = '<a href="%s.md">%s.md</a>' % (i, i)
+        if os.path.exists(os.path.join(results, i + ".json")):
+            links += ', <a href="%s.json">%s.json</a>' % (i, i)
+        return ('<section id="%s"><h2>%s: %s</h2><p class="files">%s</p>%s</section>'
+                % (i, i, html.escape(title), links, markdown(text)))
+
+    for i, title in claims:
+        body.append(experiment_section(i, title))
+
+    body.append('<section id="index"><h2>Experiments</h2><div class="table"><table class="sortable"><thead><tr>'
+                '<th>ID</th><th>what</th><th>markdown</th><th>data</th></tr></thead><tbody>')
+    for i, title in ordered:
+        data = '<a href="%s.json">%s.json</a>' % (i, i) if os.path.exists(os.path.join(results, i + ".json")) else "-"
+        body.append('<tr><td><a href="#%s">%s</a></td><td>%s</td><td><a href="%s.md">%s.md</a></td><td>%s</td></tr>'
+                    % (i, i, html.escape(title), i, i, data))
+    body.append("</tbody></table></div></section>")
+
+    for i, title in entries:
+        if i != "claims":
+            body.append(experiment_section(i, title))
+
+    if pareto:
+        body.append('<section id="pareto-interactive"><h2>Speed against accuracy (pareto.json, interactive)</h2>'
+                    '<p>Every configuration of <a href="#pareto">pareto</a>: time per iteration against the share of '
+                    'structural springs crossing the body; hover a point for its configuration. Filled points meet the '
+                    'limits; each series its own colour and marker.</p><div class="charts" id="pareto-charts"></div>'
+                    '<script>var CLOTHBENCH_PARETO = %s;</script></section>' % json.dumps(pareto))
+
     body.append('<section id="viewer"><h2>3-D viewer</h2>')
     if not found:
         body.append("<p>No glTF files under <code>pictures/</code>.</p>")
@@ -263,29 +310,6 @@ def main():
                            html.escape(m["glb"]), what, m["kib"]))
         body.append("</div>")
     body.append("</section>")
-
-    if pareto:
-        body.append('<section id="pareto-interactive"><h2>Speed against accuracy (pareto.json, interactive)</h2>'
-                    '<p>Every configuration of <a href="#pareto">pareto</a>: time per iteration against the share of '
-                    'structural springs crossing the body; hover a point for its configuration. Filled points meet the '
-                    'limits.</p><div class="charts" id="pareto-charts"></div>'
-                    '<script>var CLOTHBENCH_PARETO = %s;</script></section>' % json.dumps(pareto))
-
-    body.append('<section id="index"><h2>Experiments</h2><table class="sortable"><thead><tr><th>ID</th><th>what</th>'
-                '<th>markdown</th><th>data</th></tr></thead><tbody>')
-    for i, title in entries:
-        data = '<a href="%s.json">%s.json</a>' % (i, i) if os.path.exists(os.path.join(results, i + ".json")) else "-"
-        body.append('<tr><td><a href="#%s">%s</a></td><td>%s</td><td><a href="%s.md">%s.md</a></td><td>%s</td></tr>'
-                    % (i, i, html.escape(title), i, i, data))
-    body.append("</tbody></table></section>")
-
-    for i, title in entries:
-        text = open(os.path.join(results, i + ".md"), encoding="utf-8").read()
-        links = '<a href="%s.md">%s.md</a>' % (i, i)
-        if os.path.exists(os.path.join(results, i + ".json")):
-            links += ', <a href="%s.json">%s.json</a>' % (i, i)
-        body.append('<section id="%s"><h2>%s: %s</h2><p class="files">%s</p>%s</section>'
-                    % (i, i, html.escape(title), links, markdown(text)))
 
     scripts = ["web/three.min.js", "web/GLTFLoader.js", "web/OrbitControls.js", "web/chart.min.js", "web/viewer.js",
                "web/report.js"] + ["web/models/%s.js" % m["name"] for m in found]

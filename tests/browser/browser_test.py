@@ -11,7 +11,12 @@ report/make_report.py. Fails on
 - a viewer whose model did not load, or a blank 3-D canvas (less than 2 % of its pixels differ from the
   viewer's background in the screenshot),
 - a walking animation that does not advance: while the page plays, its clock must run (data-played), and
-  the animated canvas must differ between screenshots at two times of the clip (#time=0.05, #time=0.35).
+  the animated canvas must differ between screenshots at two times of the clip (#time=0.05, #time=0.35; with
+  #viewer-first, which moves the viewer, the page's last section, under the header),
+- a page that does not open with the answers (then the claims, the viewer last), an answer that names a row
+  missing a limit (answers_test.py's checks), anything wider than the 1,300 px window (the page, or a table
+  scrolling in its box), or a chart with two series of one colour; on the fixture and, where the source tree
+  has results/, on the page of those results (copied into WORK/).
 Screenshots are left in WORK/. Exit 77 (ctest: skipped) without chromium.
 """
 import argparse
@@ -24,6 +29,9 @@ import subprocess
 import sys
 import time
 import zlib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from answers_test import check_page  # noqa: E402
 
 BACKGROUND = (242, 242, 242)  # viewer.js's clear colour 0xf2f2f2
 
@@ -100,6 +108,25 @@ def attribute(dom, name):
     return m.group(1).replace("&quot;", '"').replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">")
 
 
+def layout_failures(binary, url, profile, what):
+    """The page at 1,300 px (report.js's data-page-overflow, data-wide-tables, data-chart-colours, data-errors)."""
+    dom, _ = chromium(binary, url, 6000, {"profile": profile, "args": ["--dump-dom"]})
+    out = []
+    errors = json.loads(attribute(dom, "data-errors") or '["the page\'s error recorder did not run"]')
+    out += ["%s: page error: %s" % (what, e) for e in errors]
+    overflow = attribute(dom, "data-page-overflow")
+    if overflow != "0":
+        out.append("%s: wider than the 1,300 px window by %s px" % (what, overflow))
+    wide = json.loads(attribute(dom, "data-wide-tables") or '["report.js did not measure the tables"]')
+    out += ["%s: a table wider than its box at 1,300 px: %s" % (what, w) for w in wide]
+    for colours in json.loads(attribute(dom, "data-chart-colours") or "[]"):
+        if len(set(colours)) != len(colours):
+            out.append("%s: a chart repeats a series colour: %s" % (what, colours))
+    print("%s at 1,300 px: overflow %s px, %d tables scrolling, %d charts" % (what, overflow, len(wide),
+          len(json.loads(attribute(dom, "data-chart-colours") or "[]"))))
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--clothbench", required=True)
@@ -141,6 +168,21 @@ def main():
         failures.append("the page has %d 3-D viewers, expected the walking and the dressing model" % figures)
 
     url = "file://" + os.path.abspath(index)
+    # answers first, claims next, the viewer last; no answer names a row that misses a limit
+    failures += ["fixture page: " + f for f in check_page(results, page)[0]]
+    # the page as it opens at 1,300 px: nothing wider than the window, charts' series in distinct colours
+    failures += layout_failures(binary, url, os.path.join(a.work, "profile-layout"), "fixture page")
+    source_results = os.path.join(a.source, "results")
+    if os.path.exists(os.path.join(source_results, "README.md")):
+        copy = os.path.join(a.work, "source-results")
+        shutil.copytree(source_results, copy, ignore=shutil.ignore_patterns("web", "index.html", ".chromium-profile"))
+        run([sys.executable, os.path.join(a.source, "report/make_report.py"), copy], stdout=subprocess.DEVNULL)
+        copy_page = open(os.path.join(copy, "index.html"), encoding="utf-8").read()
+        failures += ["results/ page: " + f for f in check_page(copy, copy_page)[0]]
+        failures += layout_failures(binary, "file://" + os.path.abspath(os.path.join(copy, "index.html")),
+                                    os.path.join(a.work, "profile-source"), "results/ page")
+    # the viewers moved to the top (#viewer-first) for the screenshots below
+    url += "#viewer-first"
     # the page playing: no errors, every model shown, the clock running
     dom, log = chromium(binary, url, 6000, {"profile": os.path.join(a.work, "profile"), "args": ["--dump-dom"]})
     open(os.path.join(a.work, "chromium.log"), "w").write(log)
@@ -157,7 +199,7 @@ def main():
     shots = {}
     for n, t in enumerate((0.05, 0.35)):
         shot = os.path.join(a.work, "screenshot-t%.2f.png" % t)
-        _, log = chromium(binary, url + "#time=%.2f" % t, 6000,
+        _, log = chromium(binary, url + "&time=%.2f" % t, 6000,
                           {"profile": os.path.join(a.work, "profile%d" % n), "args": ["--screenshot=" + shot]})
         if os.path.exists(shot):
             shots[t] = read_png(shot)
