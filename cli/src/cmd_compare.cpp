@@ -252,7 +252,7 @@ int compare(const std::string& old_path, const std::string& new_path, double thr
                                                  " or more"
                             : tally.changed ? "the rows that pair ran other configurations"
                                             : "no row pairs (by name, or by --pair-by's fields)";
-    std::fprintf(stderr, "clothbench compare: no row could be judged: %s\n", why.c_str());
+    std::fprintf(stderr, "clothbench compare: no row's time could be judged: %s\n", why.c_str());
     return 2;
   }
   return 0;

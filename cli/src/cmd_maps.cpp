@@ -101,7 +101,7 @@ void add_maps_command(CLI::App& app, Action& action) {
                               "one; CLOTHBENCH_WITH_EGL) or cpu (default: ") +
                       kDefaultRenderer + ")")
       ->check(CLI::IsMember({"gl", "egl", "cpu"}));
-  cmd->add_option("--size", args->size, "map size [pixels]")->check(CLI::Range(8, 8192));
+  cmd->add_option("--size", args->size, "map size [pixels]")->check(CLI::Range(8, 8192))->capture_default_str();
   cmd->add_option("--png", args->png_dir, "output folder")->required();
   cmd->callback([&action, args] { action = [args] { return run_maps(*args); }; });
 }

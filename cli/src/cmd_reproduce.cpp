@@ -154,10 +154,12 @@ void add_reproduce_command(CLI::App& app, Action& action) {
   cmd->footer(experiment_list);
   cmd->add_option("--out", args->out, "output folder")->capture_default_str();
   cmd->add_flag("--quick", args->quick, "fewer iterations and sizes, same code paths (smoke test)");
-  cmd->add_option("--repetitions", args->repetitions, "runs per configuration: tables show the median run; the JSON has every run's row and the aggregates (mean, median, stddev, cv)")->check(CLI::Range(1, 100));
+  cmd->add_option("--repetitions", args->repetitions, "runs per configuration: tables show the median run; the JSON has every run's row and the aggregates (mean, median, stddev, cv)")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
   cmd->add_option("--jobs", args->jobs,
-                  "worker processes for the grids of pareto and minimal (default 1: every run in this process, "
-                  "the timings of results/); more run faster and measure under shared cores")
+                  "worker processes for the grids of pareto, minimal and stability (default 1: every run in this "
+                  "process; make reproduce passes the cores, the grids' timings then measured under shared cores)")
       ->check(CLI::Range(1, 256));
   cmd->callback([&action, args] { action = [args] { return reproduce(*args); }; });
 }

@@ -1,5 +1,5 @@
-// clothbench run SCENE [--collider NAME] [--set key=value]... [--json FILE] [--png FILE] [--strict] [--estimate]
-//                 [--every-frame] [--repetitions N]
+// clothbench run SCENE [--collider NAME] [--set key=value]... [--json FILE] [--png FILE] [--gltf FILE] [--quiet]
+//                 [--strict] [--estimate] [--every-frame] [--repetitions N]
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -175,7 +175,8 @@ void add_run_command(CLI::App& app, Action& action) {
   cmd->add_option("--repetitions", args->repetitions,
                   "run N times: the summary is the median run's; --json writes every run and the aggregates "
                   "(mean, median, stddev, cv) in Google Benchmark's layout")
-      ->check(CLI::Range(1, 1000));
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
   cmd->add_flag("--every-frame", args->every_frame,
                 "moving bodies: measure accuracy at every animation frame; the verdict counts the worst");
   cmd->callback([&action, args] { action = [args] { return run(*args); }; });

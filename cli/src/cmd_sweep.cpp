@@ -175,7 +175,7 @@ void add_sweep_command(CLI::App& app, Action& action) {
   cmd->add_option("scene", a->scene, "scene file (TOML)")->required();
   cmd->add_option("--collider", a->colliders, "comma-separated colliders (default: the scene's)");
   cmd->add_option("--set", a->sets, "section.key=v1,v2,...: an axis of the grid (repeatable)");
-  cmd->add_option("--repetitions", a->repetitions, "runs per point")->check(CLI::Range(1, 1000));
+  cmd->add_option("--repetitions", a->repetitions, "runs per point")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--out", a->out, "the sweep's folder (points/, sweep.json, merged.json)")->required();
   cmd->add_option("--jobs", a->jobs, "worker processes at once (default: the cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--shard", a->shard, "i/N: run only points i, i + N, ... (for any scheduler)");

@@ -259,7 +259,7 @@ std::string renderer_table(ExperimentContext& ctx) {
       << (software ? "**These timings were taken without a GPU**: EGL found only Mesa's software device, so `is-egl` "
                      "draws with the same llvmpipe as `is-gl` (bit-identical maps, tests/collide_is/egl_test.cpp) and "
                      "its compute shaders run on the CPU too; on a machine with a GPU `is-egl` draws and answers "
-                     "there (README.md, *On a GPU*). "
+                     "there (docs/gpu.md). "
                    : "`is-egl` drew on the GPU named below. ")
       << "Devices:\n\n"
       << devices << "\n"

@@ -93,7 +93,7 @@ std::string ExperimentContext::grid_note(std::size_t runs) const {
                                     : "one after another in one process (`reproduce --jobs 1`)";
   return "This grid (" + std::to_string(runs) + " runs) ran " + how +
          "; a wider one runs with `clothbench sweep SCENE --collider a,b --set key=v1,v2 --jobs N`, or on a Slurm "
-         "cluster with `--slurm` (README, \"Sweeps\").";
+         "cluster with `--slurm` (docs/cli.md, \"Sweeps beyond one machine\").";
 }
 
 const RunResult& ExperimentContext::run(const std::string& scene, const std::string& collider,
