@@ -46,7 +46,7 @@ struct RunResult {
   std::string config_hash;      ///< config_hash of the scene as run (scene.hpp)
   double strain_threshold = 0;  ///< solver.threshold when a super-elasticity limit was on, else 0
   long iteration_budget = 0;    ///< most iterations the stop rule allows (phases end early at their goal)
-  double estimate_s = 0;        ///< simulation time estimated up front [s] (results never depend on it)
+  double estimate_s = 0;        ///< simulation time estimated up front, sewing and draping at their budget [s] (results never depend on it)
   int vertices = 0, query_points = 0;
   long body_triangles = 0;        ///< the exact body's (the oracle's)
   long collision_triangles = 0;   ///< body.collision_triangles: the colliders' simplified copy's; 0 without one
@@ -114,7 +114,7 @@ struct RunOptions {
   bool trace = false;     ///< record the wall time of every sew iteration
   FrameCallback on_frame; ///< optional, per animation frame
   bool measure_frames = false;  ///< oracle accuracy at every animation frame (animate_*_max)
-  double estimate_above_s = 10; ///< with progress: print the estimate up front when it exceeds this [s]
+  double estimate_above_s = 10; ///< with progress: print the estimate up front when the animation's exceeds this, or the dressing's bound ten times this [s]
   bool estimate_only = false;   ///< print the estimate and return before the sew phase (nothing simulated)
 };
 
