@@ -173,9 +173,14 @@ Accuracy Oracle::measure(PointsView points) const {
   std::vector<Real> depth;
   signed_distance(points, depth);
   const double depth_ms = clock.ms();
+  Accuracy a = penetration(depth);
+  a.depth_ms = depth_ms;
+  return a;
+}
+
+Accuracy Oracle::penetration(const std::vector<Real>& depth) {
   // penetration [mm] of every finite point; 0 outside
   Accuracy a;
-  a.depth_ms = depth_ms;
   std::vector<double> pen;
   pen.reserve(depth.size());
   double sum = 0;

@@ -42,11 +42,11 @@ constexpr Real kAttachedFar = 0.01f;  // [m]: as the runner's warning: a waistba
 
 Placement measure_placement(const BodyFrame& body, const ClothMesh& cloth) {
   const Oracle oracle(body);
-  Placement p;
-  p.accuracy = oracle.measure(PointsView(cloth.positions));
-  oracle.measure_crossings(PointsView(cloth.positions), structural_springs(cloth), p.accuracy);
   std::vector<Real> d;
   oracle.signed_distance(PointsView(cloth.positions), d);
+  Placement p;
+  p.accuracy = Oracle::penetration(d);
+  oracle.measure_crossings(PointsView(cloth.positions), structural_springs(cloth), p.accuracy);
   for (Real x : d) p.touching += x >= 0 && x < kTouching;
   for (int v : cloth.attached) {
     const Real x = d[static_cast<std::size_t>(v)];

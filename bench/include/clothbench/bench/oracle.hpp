@@ -68,6 +68,8 @@ class Oracle {
   void update_body(const BodyFrame& body);
   /// Penetration statistics of the points [m] against the current frame.
   Accuracy measure(PointsView points) const;
+  /// The same statistics from the points' signed distances [m] (signed_distance's output; NaN: not counted).
+  static Accuracy penetration(const std::vector<Real>& signed_distances);
   /// out[i] = signed distance of points[i] [m], < 0 inside; NaN for a non-finite point.
   /// `out` is resized to points.count.
   void signed_distance(PointsView points, std::vector<Real>& out) const;
