@@ -15,6 +15,7 @@
 #include "clothbench/config.h"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/sim/param_fields.hpp"
 
 namespace clothbench {
 
@@ -144,47 +145,116 @@ class Section {
   std::set<std::string> used_;
 };
 
-void read_body(Section s, BodySpec& b) {
-  s.text("file", b.file);
-  s.text("animation", b.animation);
-  s.number("dress_at_s", b.dress_at_s, 0, 1e4);
-  s.number("start_s", b.start_s, 0, 1e4);
-  s.number("end_s", b.end_s, -1, 1e4);
-  s.flag("walk_in_place", b.walk_in_place);
-  s.number("fps", b.fps, 1, 1000);
-  s.flag("move_between_frames", b.move_between_frames);
-  s.flag("prepare_ahead", b.prepare_ahead);
-  s.number("skin_mm", b.skin_mm, 0, 1000);
-  s.number("collision_triangles", b.collision_triangles, 0, 1e8);
-  s.choice("shape", [&](const std::string& v) {
-    if (v != "mesh" && v != "sphere") throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + v + "\"");
-    b.shape = v;
-  });
-  s.number("radius", b.radius, 1e-3, 100);
-  s.vec3("center", b.center);
-  s.vec3("velocity", b.velocity);
-  s.number("move_s", b.move_s, 0, 1e4);
-  s.finish();
+using fields::Flag, fields::Hash, fields::Key, fields::Range, fields::Text;
+
+// [scene]: labels, not settings
+struct Head {
+  std::string& name;
+  std::string& description;
+};
+
+template <class V>
+void visit_fields(const Head& h, V& v) {
+  v(Key{"name", "", "the label in tables (default: the file name)", Hash::kNever}, h.name, Text{});
+  v(Key{"description", "", "a line of text", Hash::kNever}, h.description, Text{});
 }
 
-void read_garment(Section s, GarmentSpec& g) {
-  s.text("file", g.file);
-  s.number("vertices", g.vertices, 0, 1e6);
-  s.number("spacing_cm", g.spacing_cm, 0.05, 100);
-  s.flag("attach", g.attach);
-  s.number("jitter_mm", g.jitter_mm, 0, 100);
-  s.number("seed", g.seed, 0, 1e9);
-  s.finish();
+template <class B, class V, std::enable_if_t<std::is_same_v<std::remove_const_t<B>, BodySpec>, int> = 0>
+void visit_fields(B& b, V& v) {
+  v(Key{"file", "", "the body: debian:human, data:REL or a path"}, b.file, Text{});
+  v(Key{"animation", "", "animation name; empty: the rest pose"}, b.animation, Text{});
+  v(Key{"dress_at_s", "s", "garments are dressed on the frame at this time"}, b.dress_at_s, Range{0, 1e4});
+  v(Key{"start_s", "s", "the measured window's start"}, b.start_s, Range{0, 1e4});
+  v(Key{"end_s", "s", "the measured window's end; < 0: the clip's end"}, b.end_s, Range{-1, 1e4});
+  v(Key{"walk_in_place", "", "remove the root's horizontal travel"}, b.walk_in_place, Flag{});
+  v(Key{"fps", "1/s", "body frames per second of animation"}, b.fps, Range{1, 1000});
+  v(Key{"move_between_frames", "", "each step sees the body at its own time"}, b.move_between_frames, Flag{});
+  v(Key{"skin_mm", "mm", "contacts answered this much closer"}, b.skin_mm, Range{0, 1000});
+  v(Key{"prepare_ahead", "", "the next frame prepared on a second thread"}, b.prepare_ahead, Flag{});
+  v(Key{"collision_triangles", "", "> 0: colliders see a simplified copy", Hash::kWhenNonzero}, b.collision_triangles,
+    Range{0, 1e8});
+  v(Key{"shape", "", "mesh or sphere"}, b.shape, fields::checked([](const std::string& x) {
+      if (x != "mesh" && x != "sphere") throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + x + "\"");
+    }));
+  v(Key{"radius", "m", "sphere radius"}, b.radius, Range{1e-3, 100});
+  v(Key{"center", "m", "sphere centre at t = 0"}, b.center, fields::Triple{});
+  v(Key{"velocity", "m/s", "sphere velocity while animated"}, b.velocity, fields::Triple{});
+  v(Key{"move_s", "s", "sphere: seconds of motion"}, b.move_s, Range{0, 1e4});
 }
 
-void read_material(Section s, Material& m) {
-  s.number("density", m.density, 1e-4, 100);
-  s.number("k_structural", m.k_structural, 0, 1e7);  // 0 = automatic (the papers' regime)
-  s.number("k_shear", m.k_shear, 0, 1e7);
-  s.number("k_flexion", m.k_flexion, 0, 1e7);
-  s.number("damping", m.damping, 0, 1e4);  // per unit mass [1/s]
-  s.number("friction", m.friction, 0, 1);
-  s.number("reflection", m.reflection, 0, 1);
+template <class G, class V, std::enable_if_t<std::is_same_v<std::remove_const_t<G>, GarmentSpec>, int> = 0>
+void visit_fields(G& g, V& v) {
+  v(Key{"file", "", "pattern file (required)"}, g.file, Text{});
+  v(Key{"vertices", "", "target vertex count; 0: use spacing_cm"}, g.vertices, Range{0, 1e6});
+  v(Key{"spacing_cm", "cm", "grid spacing when vertices is 0"}, g.spacing_cm, Range{0.05, 100});
+  v(Key{"attach", "", "honour the pattern's attached edges"}, g.attach, Flag{});
+  v(Key{"jitter_mm", "mm", "> 0: the placed garment moved by a random offset"}, g.jitter_mm, Range{0, 100});
+  v(Key{"seed", "", "the jitter's random seed"}, g.seed, Range{0, 1e9});
+}
+
+// [collider]: the collider's name, the dressing one's, and every collider's options
+template <class S, class V, std::enable_if_t<std::is_same_v<std::remove_const_t<S>, Scene>, int> = 0>
+void visit_fields(S& s, V& v) {
+  v(Key{"name", "", "the collider (clothbench colliders)"}, s.collider, Text{});
+  v(Key{"dress_with", "", "the collider of sewing, draping and the lead-in; empty: name"}, s.dress_with, Text{});
+  visit_fields(s.collider_options, v);
+}
+
+template <class R, class V, std::enable_if_t<std::is_same_v<std::remove_const_t<R>, StopRule>, int> = 0>
+void visit_fields(R& r, V& v) {
+  v(Key{"sew", "", "run the sew phase"}, r.sew, Flag{});
+  v(Key{"sew_max_s", "s", "sew phase limit (simulated)"}, r.sew_max_s, Range{0, 1e4});
+  v(Key{"sewn_gap_mm", "mm", "sewn: every seam pair closer than this"}, r.sewn_gap_mm, Range{0, 1e4});
+  v(Key{"drape_max_s", "s", "drape phase limit (simulated)"}, r.drape_max_s, Range{0, 1e4});
+  v(Key{"settle_speed", "m/s", "settled: RMS speed below this"}, r.settle_speed, Range{0, 100});
+  v(Key{"settle_window_s", "s", "... for this long"}, r.settle_window_s, Range{0, 100});
+  v(Key{"max_iterations", "", "> 0: stop each phase after this many iterations"}, r.max_iterations, Range{0, 1e9});
+}
+
+// the reading visitor: each row's key read from one table of the scene, checked against the row's rule
+class Reader {
+ public:
+  explicit Reader(Section& s) : s_(s) {}
+  template <class T>
+  void operator()(const Key& k, T& m, const Range& r) {
+    s_.number(k.name, m, r.lo, r.hi);
+  }
+  template <class T>
+  void operator()(const Key& k, T& m, const fields::RangeOrAuto& r) {
+    const toml::node* n = s_.find(k.name);
+    if (n && n->value<std::string>() == std::optional<std::string>("auto")) m = 0;
+    else if (n) s_.number(k.name, m, r.lo, r.hi);
+  }
+  template <class T>
+  void operator()(const Key& k, T& m, const fields::Scaled& r) {
+    if (!s_.find(k.name)) return;
+    double given = 0;  // in the key's unit
+    s_.number(k.name, given, r.lo, r.hi);
+    m = T(given * r.to_member);
+  }
+  void operator()(const Key& k, int& m, const fields::OneOf& r) {
+    if (!s_.find(k.name)) return;
+    s_.number(k.name, m, -1e9, 1e9);
+    if (std::find(r.values.begin(), r.values.end(), m) == r.values.end())
+      s_.fail(*s_.find(k.name), k.name, std::string("must be ") + r.says + ", got " + std::to_string(m));
+  }
+  void operator()(const Key& k, bool& m, Flag) { s_.flag(k.name, m); }
+  void operator()(const Key& k, std::string& m, Text) { s_.text(k.name, m); }
+  void operator()(const Key& k, Vec3& m, fields::Triple) { s_.vec3(k.name, m); }
+  template <class T, class P, class Q>
+  void operator()(const Key& k, T& m, const fields::Choice<P, Q>& c) {
+    s_.choice(k.name, [&](const std::string& v) { m = c.parse(v); });
+  }
+
+ private:
+  Section& s_;
+};
+
+// every key of a table read through its rows; any other key is an error
+template <class T>
+void read_section(Section s, T&& fields) {
+  Reader reader(s);
+  visit_fields(fields, reader);
   s.finish();
 }
 
@@ -193,88 +263,6 @@ void apply_regime_key(Section s, Material& m, SolverParams& p) {
   Regime regime = Regime::kStable;
   s.choice("regime", [&](const std::string& v) { regime = parse_regime(v); });
   apply_regime(regime, m, p);
-}
-
-void read_solver(Section s, SolverParams& p) {
-  s.choice("regime", [](const std::string&) {});  // applied first (apply_regime_key); read here as a known key
-  s.choice("masses", [&](const std::string& v) { p.masses = parse_mass_model(v); });
-  if (const toml::node* n = s.find("dt")) {
-    if (n->value<std::string>() == std::optional<std::string>("auto")) {
-      p.dt = 0;
-    } else {
-      s.number("dt", p.dt, 1e-7, 1);
-    }
-  }
-  s.number("dt_fraction", p.dt_fraction, 1e-3, 1);
-  s.flag("allow_unstable_dt", p.allow_unstable_dt);
-  s.choice("limit", [&](const std::string& v) {
-    check_limiter(v);
-    p.limit = v;
-  });
-  s.number("threshold", p.threshold, 1e-4, 10);
-  s.number("stiff_factor", p.stiff_factor, 1, 1e4);
-  s.number("limit_passes", p.limit_passes, 1, 1000);
-  s.flag("limit_after_response", p.limit_after_response);
-  s.flag("push_out", p.push_out);
-  s.number("push_speed", p.push_speed, 1e-3, 100);
-  s.number("limit_speed", p.limit_speed, 0, 100);
-  double tolerance_mm = -1;  // given in mm, kept in m
-  s.number("limit_tolerance_mm", tolerance_mm, 0, 10);
-  if (tolerance_mm >= 0) p.limit_tolerance = Real(tolerance_mm * 1e-3);
-  s.flag("face_queries", p.face_queries);
-  s.flag("reaction_force", p.reaction_force);
-  s.vec3("gravity", p.gravity);
-  s.choice("seam_method", [&](const std::string& v) { p.seam_method = parse_seam_method(v); });
-  s.number("seam_stiffness", p.seam_stiffness, 0, 1e7);
-  s.number("seam_reach", p.seam_reach, 1e-4, 10);
-  s.number("seam_speed", p.seam_speed, 1e-4, 100);
-  s.number("attraction_speed", p.attraction_speed, 0, 100);
-  s.number("merge_distance", p.merge_distance, 0, 1);
-  s.number("max_speed", p.max_speed, 1e-3, 1e6);
-  s.choice("integrator", [&](const std::string& v) { check_integrator(v), p.integrator = v; });
-  s.number("cg_tolerance", p.integration.cg_tolerance, 1e-7, 0.5);
-  s.number("cg_max_iterations", p.integration.cg_max_iterations, 1, 1e5);
-  s.number("rk_tol_x", p.integration.rk_tol_x, 1e-9, 1);
-  s.number("rk_tol_v", p.integration.rk_tol_v, 1e-9, 100);
-  s.number("projective_iterations", p.integration.projective_iterations, 1, 1000);
-  s.finish();
-}
-
-void read_collider(Section s, Scene& scene) {
-  ColliderOptions& o = scene.collider_options;
-  s.text("name", scene.collider);
-  s.text("dress_with", scene.dress_with);
-  s.number("tol", o.tol, 0, 1);
-  s.flag("face_normals", o.face_normals);
-  s.number("search_radius", o.search_radius, 1e-4, 10);
-  s.number("map_size", o.map_size, 16, 8192);
-  s.flag("side_layer", o.side_layer);
-  s.number("side_layer_mm", o.side_layer_mm, 0, 1000);
-  s.number("views", o.views, 0, 1e6);
-  if (o.views != 2 && o.views != 4 && o.views != 6)
-    s.fail(*s.find("views"), "views", "must be 2 (front/back), 4 (+ left/right) or 6 (+ top/bottom), got " +
-                                          std::to_string(o.views));
-  s.number("layers", o.layers, 1, 8);
-  s.flag("fit_extent", o.fit_extent);
-  s.flag("float_maps", o.float_maps);
-  s.flag("tangent_plane", o.tangent_plane);
-  s.number("max_speed", o.max_speed, 1e-3, 1e3);
-  s.number("query_margin_mm", o.query_margin_mm, 0, 1e4);
-  s.number("threads", o.threads, 1, 256);
-  s.flag("coherent", o.coherent);
-  s.number("voxel_size", o.voxel_size, 1e-4, 0.1);
-  s.finish();
-}
-
-void read_stop(Section s, StopRule& r) {
-  s.flag("sew", r.sew);
-  s.number("sew_max_s", r.sew_max_s, 0, 1e4);
-  s.number("sewn_gap_mm", r.sewn_gap_mm, 0, 1e4);
-  s.number("drape_max_s", r.drape_max_s, 0, 1e4);
-  s.number("settle_speed", r.settle_speed, 0, 100);
-  s.number("settle_window_s", r.settle_window_s, 0, 100);
-  s.number("max_iterations", r.max_iterations, 0, 1e9);
-  s.finish();
 }
 
 // "section.key=value": value in TOML syntax, or a bare word taken as a string
@@ -318,51 +306,66 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
                                "unknown section '" + k + "'" + (sections.count(k) ? "" : suggestion(k, sections)) +
                                    " (sections: scene, body, [[garment]], material, solver, collider, stop)"));
   }
-  Section head(root["scene"].as_table(), file, "scene");
-  head.text("name", s.name);
-  head.text("description", s.description);
-  head.finish();
-  read_body(Section(root["body"].as_table(), file, "body"), s.body);
+  const auto section = [&](const char* name) { return Section(root[name].as_table(), file, name); };
+  read_section(section("scene"), Head{s.name, s.description});
+  read_section(section("body"), s.body);
   if (const toml::node* g = root.get("garment")) {
     const toml::array* list = g->as_array();
     if (!list) throw InputError(located(file, static_cast<int>(g->source().begin.line), "garment: use [[garment]] tables"));
     for (const auto& item : *list) {
       if (!item.as_table()) throw InputError(located(file, static_cast<int>(item.source().begin.line), "garment: expected a table"));
       GarmentSpec spec;
-      read_garment(Section(item.as_table(), file, "garment"), spec);
+      read_section(Section(item.as_table(), file, "garment"), spec);
       if (spec.file.empty()) throw InputError(located(file, static_cast<int>(item.source().begin.line), "garment.file is required"));
       s.garments.push_back(spec);
     }
   }
-  apply_regime_key(Section(root["solver"].as_table(), file, "solver"), s.material, s.solver);
-  read_material(Section(root["material"].as_table(), file, "material"), s.material);
-  read_solver(Section(root["solver"].as_table(), file, "solver"), s.solver);
-  read_collider(Section(root["collider"].as_table(), file, "collider"), s);
+  apply_regime_key(section("solver"), s.material, s.solver);
+  read_section(section("material"), s.material);
+  read_section(section("solver"), s.solver);
+  read_section(section("collider"), s);
   if (s.body.skin_mm > 0 && !(s.body.skin_mm * 1e-3 < double(s.collider_options.tol)))
     throw InputError(located(file, 0, "body.skin_mm = " + std::to_string(s.body.skin_mm) +
                                           ": must be below collider.tol (" +
                                           std::to_string(1e3 * double(s.collider_options.tol)) +
                                           " mm), or the skin would push every contact out"));
-  read_stop(Section(root["stop"].as_table(), file, "stop"), s.stop);
+  read_section(section("stop"), s.stop);
   return s;
 }
 
-// one `section.key = value` line; numbers with 17 significant digits (exact for float and double)
+template <class Rule>
+struct IsChoice : std::false_type {};
+template <class P, class Q>
+struct IsChoice<fields::Choice<P, Q>> : std::true_type {};
+
+// the hashing visitor: one `section.key = value` line per row; numbers with 17 significant digits (exact for
+// float and double)
 class ConfigWriter {
  public:
-  explicit ConfigWriter(std::string section) : section_(std::move(section)) {}
-  ConfigWriter& operator()(const char* key, double v) { return line(key, number(v)); }
-  ConfigWriter& operator()(const char* key, bool v) { return line(key, v ? "true" : "false"); }
-  ConfigWriter& operator()(const char* key, int v) { return line(key, std::to_string(v)); }
-  ConfigWriter& operator()(const char* key, long v) { return line(key, std::to_string(v)); }
-  ConfigWriter& operator()(const char* key, const std::string& v) { return line(key, quoted(v)); }
-  ConfigWriter& operator()(const char* key, const char* v) { return (*this)(key, std::string(v)); }
-  ConfigWriter& operator()(const char* key, const Vec3& v) {
-    return line(key, "[" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + "]");
+  explicit ConfigWriter(const char* section) : section_(section) {}
+  template <class T, class Rule>
+  void operator()(const Key& k, const T& m, const Rule& rule) {
+    if (k.hash == Hash::kNever) return;
+    if constexpr (std::is_same_v<Rule, fields::Scaled>) {
+      write(k.name, double(m) * rule.to_key);
+    } else if constexpr (IsChoice<Rule>::value) {
+      write(k.name, rule.print(m));
+    } else {
+      if (k.hash == Hash::kWhenNonzero && m == T{}) return;
+      write(k.name, m);
+    }
   }
   std::string str() const { return text_.str(); }
 
  private:
+  void write(const char* key, double v) { line(key, number(v)); }
+  void write(const char* key, bool v) { line(key, v ? "true" : "false"); }
+  void write(const char* key, int v) { line(key, std::to_string(v)); }
+  void write(const char* key, long v) { line(key, std::to_string(v)); }
+  void write(const char* key, const std::string& v) { line(key, quoted(v)); }
+  void write(const char* key, const Vec3& v) {
+    line(key, "[" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + "]");
+  }
   static std::string quoted(const std::string& v) {
     std::string q = "\"";
     for (const char c : v) q += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
@@ -373,84 +376,43 @@ class ConfigWriter {
     std::snprintf(buf, sizeof buf, "%.17g", v);
     return buf;
   }
-  template <class V>
-  ConfigWriter& line(const char* key, const V& value) {
-    text_ << section_ << "." << key << " = " << value << "\n";
-    return *this;
-  }
+  void line(const char* key, const std::string& value) { text_ << section_ << "." << key << " = " << value << "\n"; }
   std::string section_;
   std::ostringstream text_;
 };
 
-std::string body_config(const BodySpec& b) {
-  ConfigWriter w("body");
-  w("file", b.file)("animation", b.animation)("dress_at_s", b.dress_at_s)("start_s", b.start_s)("end_s", b.end_s);
-  w("walk_in_place", b.walk_in_place)("fps", b.fps)("move_between_frames", b.move_between_frames)("skin_mm", b.skin_mm)(
-      "prepare_ahead", b.prepare_ahead);
-  if (b.collision_triangles > 0) w("collision_triangles", b.collision_triangles);  // absent: the hashes before it
-  w("shape", b.shape)("radius", double(b.radius));
-  w("center", b.center)("velocity", b.velocity)("move_s", b.move_s);
-  return w.str();
-}
-
-std::string garment_config(const GarmentSpec& g) {
-  ConfigWriter w("garment");
-  w("file", g.file)("vertices", g.vertices)("spacing_cm", g.spacing_cm)("attach", g.attach)("jitter_mm", g.jitter_mm)("seed", g.seed);
-  return w.str();
-}
-
-std::string material_config(const Material& m) {
-  ConfigWriter w("material");
-  w("density", double(m.density))("k_structural", double(m.k_structural))("k_shear", double(m.k_shear));
-  w("k_flexion", double(m.k_flexion))("damping", double(m.damping))("friction", double(m.friction));
-  w("reflection", double(m.reflection));
-  return w.str();
-}
-
-std::string solver_config(const SolverParams& p) {
-  ConfigWriter w("solver");
-  w("dt", double(p.dt))("dt_fraction", double(p.dt_fraction))("allow_unstable_dt", p.allow_unstable_dt);
-  w("masses", to_string(p.masses))("limit_after_response", p.limit_after_response);
-  w("push_out", p.push_out)("push_speed", double(p.push_speed));
-  w("limit", p.limit)("threshold", double(p.threshold))("stiff_factor", double(p.stiff_factor));
-  w("limit_passes", p.limit_passes)("limit_speed", double(p.limit_speed))(
-      "limit_tolerance_mm", 1e3 * double(p.limit_tolerance))("face_queries", p.face_queries);
-  w("reaction_force", p.reaction_force)("gravity", p.gravity)("seam_method", to_string(p.seam_method));
-  w("seam_stiffness", double(p.seam_stiffness))("seam_reach", double(p.seam_reach));
-  w("seam_speed", double(p.seam_speed))("attraction_speed", double(p.attraction_speed));
-  w("merge_distance", double(p.merge_distance))("max_speed", double(p.max_speed));
-  w("bounds_margin", double(p.bounds_margin));  // not a scene key, but it decides divergence
-  w("integrator", p.integrator)("cg_tolerance", double(p.integration.cg_tolerance));
-  w("cg_max_iterations", p.integration.cg_max_iterations)("rk_tol_x", double(p.integration.rk_tol_x));
-  w("rk_tol_v", double(p.integration.rk_tol_v))("projective_iterations", p.integration.projective_iterations);
-  return w.str();
-}
-
-std::string collider_config(const Scene& s) {
-  const ColliderOptions& o = s.collider_options;
-  ConfigWriter w("collider");
-  w("name", s.collider)("dress_with", s.dress_with)("tol", double(o.tol))("search_radius", double(o.search_radius));
-  w("map_size", o.map_size)("side_layer", o.side_layer)("fit_extent", o.fit_extent)("float_maps", o.float_maps);
-  w("max_speed", double(o.max_speed))("threads", o.threads)("coherent", o.coherent)("face_normals", o.face_normals);
-  w("voxel_size", double(o.voxel_size))("views", o.views)("layers", o.layers)("side_layer_mm", double(o.side_layer_mm));
-  w("tangent_plane", o.tangent_plane)("query_margin_mm", double(o.query_margin_mm));
-  return w.str();
-}
-
-std::string stop_config(const StopRule& r) {
-  ConfigWriter w("stop");
-  w("sew", r.sew)("sew_max_s", r.sew_max_s)("sewn_gap_mm", double(r.sewn_gap_mm))("drape_max_s", r.drape_max_s);
-  w("settle_speed", double(r.settle_speed))("settle_window_s", r.settle_window_s)("max_iterations", r.max_iterations);
+template <class T>
+std::string config(const char* section, const T& fields) {
+  ConfigWriter w(section);
+  visit_fields(fields, w);
   return w.str();
 }
 
 }  // namespace
 
+std::vector<SceneKey> scene_keys() {
+  std::vector<SceneKey> keys;
+  const auto list = [&](const char* section, auto&& fields) {
+    auto add = [&](const Key& k, const auto&, const auto&) { keys.push_back({section, k.name, k.unit, k.doc}); };
+    visit_fields(fields, add);
+  };
+  Scene s;
+  GarmentSpec g;
+  list("scene", Head{s.name, s.description});
+  list("body", s.body);
+  list("garment", g);
+  list("material", s.material);
+  list("solver", s.solver);
+  list("collider", s);
+  list("stop", s.stop);
+  return keys;
+}
+
 std::string config_text(const Scene& scene) {
-  std::string text = body_config(scene.body);
-  for (const auto& g : scene.garments) text += garment_config(g);
-  return text + material_config(scene.material) + solver_config(scene.solver) + collider_config(scene) +
-         stop_config(scene.stop);
+  std::string text = config("body", scene.body);
+  for (const auto& g : scene.garments) text += config("garment", g);
+  return text + config("material", scene.material) + config("solver", scene.solver) + config("collider", scene) +
+         config("stop", scene.stop);
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "clothbench/sim/mesh_query.hpp"
+#include "clothbench/sim/param_fields.hpp"
 #include "clothbench/sim/timer.hpp"
 #include "merged_points.hpp"
 
@@ -86,39 +87,12 @@ void require(bool ok, const char* name, const std::string& rule, double value) {
     throw std::invalid_argument(std::string(name) + " = " + std::to_string(value) + ": must be " + rule);
 }
 
+// the rows' bounds (param_fields.hpp), and what no single row says
 void validate(const Material& m, const SolverParams& p) {
-  require(m.density > 0, "density", "> 0 kg/m^2", m.density);
-  require(m.k_structural >= 0, "k_structural", ">= 0 N/m (0 = automatic)", m.k_structural);
-  require(m.k_shear >= 0, "k_shear", ">= 0 N/m (0 = automatic)", m.k_shear);
-  require(m.k_flexion >= 0, "k_flexion", ">= 0 N/m (0 = automatic)", m.k_flexion);
-  require(m.damping >= 0, "damping", ">= 0 1/s (per unit mass)", m.damping);
-  require(m.friction >= 0 && m.friction <= 1, "friction", "in [0, 1]", m.friction);
-  require(m.reflection >= 0 && m.reflection <= 1, "reflection", "in [0, 1]", m.reflection);
-  require(p.dt >= 0, "dt", ">= 0 s (0 = automatic)", p.dt);
+  fields::check_fields(m);
+  fields::check_fields(p);
   const bool auto_k = m.k_structural == 0 || m.k_shear == 0 || m.k_flexion == 0;
   require(!auto_k || p.dt > 0, "dt", "given (> 0 s) when a stiffness is automatic (0)", p.dt);
-  require(p.dt_fraction > 0 && p.dt_fraction <= 1, "dt_fraction", "in (0, 1]", p.dt_fraction);
-  require(p.threshold > 0 && p.threshold < 1, "threshold", "in (0, 100) %", p.threshold);
-  require(p.stiff_factor >= 1, "stiff_factor", ">= 1", p.stiff_factor);
-  require(p.limit_passes >= 1, "limit_passes", ">= 1", p.limit_passes);
-  check_limiter(p.limit);
-  require(p.gravity.allFinite(), "gravity", "finite", p.gravity.norm());
-  require(p.seam_stiffness >= 0, "seam_stiffness", ">= 0 N/m (0 = automatic)", p.seam_stiffness);
-  require(p.seam_reach > 0, "seam_reach", "> 0 m", p.seam_reach);
-  require(p.seam_speed > 0, "seam_speed", "> 0 m/s", p.seam_speed);
-  require(p.limit_speed >= 0, "limit_speed", ">= 0 m/s", p.limit_speed);
-  require(p.limit_tolerance >= 0, "limit_tolerance", ">= 0 m", p.limit_tolerance);
-  require(p.push_speed > 0, "push_speed", "> 0 m/s", p.push_speed);
-  require(p.attraction_speed > 0, "attraction_speed", "> 0 m/s", p.attraction_speed);
-  require(p.merge_distance > 0, "merge_distance", "> 0 m", p.merge_distance);
-  require(p.max_speed > 0, "max_speed", "> 0 m/s", p.max_speed);
-  require(p.bounds_margin > 0, "bounds_margin", "> 0 m", p.bounds_margin);
-  const IntegratorParams& i = p.integration;
-  require(i.cg_tolerance > 0 && i.cg_tolerance < 1, "cg_tolerance", "in (0, 1)", i.cg_tolerance);
-  require(i.cg_max_iterations >= 1, "cg_max_iterations", ">= 1", i.cg_max_iterations);
-  require(i.projective_iterations >= 1, "projective_iterations", ">= 1", i.projective_iterations);
-  require(i.rk_tol_x > 0, "rk_tol_x", "> 0 m", i.rk_tol_x);
-  require(i.rk_tol_v > 0, "rk_tol_v", "> 0 m/s", i.rk_tol_v);
 }
 
 // column i of a 3 x n matrix as a fixed-size vector reference

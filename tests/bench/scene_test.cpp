@@ -9,6 +9,7 @@
 #include "clothbench/bench/scene.hpp"
 #include "clothbench/config.h"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/sim/param_fields.hpp"
 
 namespace clothbench {
 namespace {
@@ -221,6 +222,46 @@ TEST(Scene, MissingFileAndPathResolution) {
   s.path = std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/dressing/shirt.toml";
   EXPECT_EQ(resolve_scene_path(s, "debian:human"), "/usr/share/assimp/models/Collada/human.zae");
   EXPECT_TRUE(std::filesystem::exists(resolve_scene_path(s, "garments/shirt.pattern")));
+}
+
+// the field tables read, check and hash every key; the scene reference must name each one
+TEST(Scene, ReadmeDocumentsEveryKey) {
+  std::ifstream in(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/README.md");
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string table = readme.substr(readme.find("## Scene files"));
+  const std::vector<SceneKey> keys = scene_keys();
+  EXPECT_GT(keys.size(), 80u);
+  for (const SceneKey& k : keys) {
+    EXPECT_NE(table.find("`" + k.key + "`"), std::string::npos) << k.section << "." << k.key << " (" << k.doc << ")";
+    EXPECT_FALSE(k.doc.empty()) << k.section << "." << k.key;
+  }
+}
+
+// a value the reader accepts is one the simulator accepts: both check the same rows
+TEST(Scene, ReaderAndSimulatorShareTheBounds) {
+  EXPECT_NE(error_of("[solver]\nthreshold = 1.5\n").find("solver.threshold: must be in [0.0001, 1]"), std::string::npos);
+  EXPECT_NE(error_of("[solver]\nbounds_margin = 0\n").find("solver.bounds_margin: must be in"), std::string::npos);
+  Scene s = parse_scene("[solver]\nthreshold = 1\nbounds_margin = 7\n", "s.toml");
+  EXPECT_EQ(s.solver.bounds_margin, 7.f);
+  EXPECT_NE(config_text(s).find("solver.bounds_margin = 7\n"), std::string::npos);
+  // Simulator's validation (fields::check_fields) on the same rows
+  SolverParams p;
+  p.threshold = 1.5f;
+  EXPECT_THROW(fields::check_fields(p), std::invalid_argument);
+  p.threshold = 1;
+  EXPECT_NO_THROW(fields::check_fields(p));
+}
+
+// every default and every preset lies within its rows' bounds
+TEST(Scene, DefaultsAndPresetsAreValid) {
+  for (const Regime r : {Regime::kStable, Regime::kPapers}) {
+    Material m;
+    SolverParams p;
+    apply_regime(r, m, p);
+    EXPECT_NO_THROW(fields::check_fields(m)) << to_string(r);
+    EXPECT_NO_THROW(fields::check_fields(p)) << to_string(r);
+  }
+  EXPECT_NO_THROW(fields::check_fields(ColliderOptions{}));
 }
 
 TEST(Scene, EveryCommittedSceneParses) {

@@ -78,6 +78,16 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 /// As load_scene, from text (`name` is used in messages and to resolve relative paths).
 Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides = {});
 
+/// One key of a scene file, from the field tables that read, check and hash it.
+struct SceneKey {
+  std::string section;  ///< "body", "garment", ... (scene.hpp's sections)
+  std::string key;
+  std::string unit;     ///< "" when none
+  std::string doc;      ///< one line; scenes/README.md says the rest
+};
+/// Every key of every section, in the tables' order.
+std::vector<SceneKey> scene_keys();
+
 /// The effective configuration: every field that decides a run (defaults included; not the name,
 /// description or path) as `section.key = value` lines in a fixed order, one block per garment.
 std::string config_text(const Scene& scene);
