@@ -3,27 +3,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
-#include <exception>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <set>
 #include <random>
-#include <thread>
 #include <utility>
 #include <vector>
 
+#include "body_source.hpp"
 #include "clothbench/bench/body_between_frames.hpp"
 #include "clothbench/bench/registry.hpp"
-#include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/errors.hpp"
 #include "clothbench/io/pattern_file.hpp"
 #include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
 #include "clothbench/sim/timer.hpp"
+#include "frame_ahead.hpp"
 
 namespace clothbench {
 
@@ -57,87 +53,9 @@ const RunResult& median_run(const std::vector<RunResult>& runs) {
   return *by_time[by_time.size() / 2];
 }
 
+namespace runner_detail {
+
 namespace {
-
-// what loading the body changed or warns about (body_loader.hpp), once per file and process
-void print_notes(const BodyModel& model) {
-  static std::set<std::string> printed;
-  if (!printed.insert(model.path()).second) return;
-  for (const std::string& n : model.notes())
-    std::fprintf(stderr, "clothbench: %s: %s%s\n", model.path().c_str(), n.rfind("warning: ", 0) == 0 ? "" : "note: ",
-                 n.c_str());
-}
-
-// the body and its motion: a (possibly animated) mesh, or a sphere moving at constant velocity
-class BodySource {
- public:
-  BodySource(const Scene& scene) : spec_(scene.body) {
-    if (spec_.shape == "sphere") {
-      if (spec_.collision_triangles > 0)
-        throw InputError(located(scene.path, 0, "body.collision_triangles needs a mesh body, not a sphere"));
-      sphere_ = make_sphere_body(Vec3::Zero(), spec_.radius, 48, 96);
-      t1_ = spec_.move_s;
-      return;
-    }
-    model_.emplace(load_body(resolve_scene_path(scene, spec_.file)));
-    print_notes(*model_);
-    if (spec_.collision_triangles > 0) proxy_.emplace(model_->simplified(spec_.collision_triangles));
-    if (spec_.animation.empty()) return;
-    anim_ = model_->animation_index(spec_.animation);
-    const double clip = model_->animations()[anim_].duration_s;
-    dress_ = spec_.dress_at_s;
-    t0_ = spec_.start_s;
-    t1_ = spec_.end_s < 0 ? clip : spec_.end_s;
-    if (!(dress_ <= t0_ && t0_ < t1_) || t1_ > clip + 1e-9)
-      throw InputError(located(scene.path, 0, "body: need dress_at_s <= start_s < end_s inside the clip [0, " +
-                                                   std::to_string(clip) + "] s, got " + std::to_string(dress_) +
-                                                   ", " + std::to_string(t0_) + ", " + std::to_string(t1_)));
-  }
-
-  bool moves() const { return t1_ > t0_; }
-  double dress_time() const { return dress_; }
-  double start() const { return t0_; }
-  double end() const { return t1_; }
-  bool is_sphere() const { return !model_; }
-  Vec3 sphere_center(double t) const { return spec_.center + spec_.velocity * Real(t); }
-
-  // the frame the colliders see at time t (animation time, or seconds of sphere motion): the collision proxy's when
-  // there is one (body.collision_triangles)
-  void frame_into(BodyFrame& out, double t) const { frame_into(proxy_ ? proxy_ : model_, out, t); }
-  // the exact body at `used`'s time, for the oracle and the pictures: `used` itself without a proxy, else `scratch`
-  const BodyFrame& exact(const BodyFrame& used, BodyFrame& scratch) const {
-    if (!proxy_) return used;
-    frame_into(model_, scratch, used.time_s);
-    return scratch;
-  }
-  bool has_proxy() const { return proxy_.has_value(); }
-
- private:
-  void frame_into(const std::optional<BodyModel>& model, BodyFrame& out, double t) const {
-    if (model) {
-      if (anim_ < 0) {
-        out = model->rest();
-      } else {
-        model->frame_into(out, anim_, t, spec_.walk_in_place);
-      }
-      return;
-    }
-    // at rest while dressing (t = 0), moving at constant velocity during the animation
-    out = sphere_;
-    out.positions.colwise() += sphere_center(t);
-    if (t > 0) {
-      out.velocities.colwise() = spec_.velocity;
-      out.moving = true;
-    }
-  }
-
- private:
-  BodySpec spec_;
-  std::optional<BodyModel> model_, proxy_;
-  BodyFrame sphere_;
-  int anim_ = -1;
-  double dress_ = 0, t0_ = 0, t1_ = 0;
-};
 
 // the largest distance of an exact body vertex from the collision proxy's surface [mm]
 double proxy_deviation_mm(const BodyFrame& proxy, const BodyFrame& exact) {
@@ -410,77 +328,6 @@ Estimate estimate_seconds(const Simulator& sim, Collider& dresser, Collider& col
   return e;
 }
 
-// the next body frame, evaluated and handed to the collider's prepare_body on a second thread while the cloth steps
-// through the current one (body.prepare_ahead): the body's motion is prescribed, so nothing of it waits on the cloth.
-// One thread for the whole animation (an OpenGL context moving to a new thread every frame costs, measured with
-// is-egl on an NVIDIA H100, more than the drawing)
-class FrameAhead {
- public:
-  explicit FrameAhead(const BodySource& source) : source_(source), worker_([this] { work(); }) {}
-  FrameAhead(const FrameAhead&) = delete;
-  FrameAhead& operator=(const FrameAhead&) = delete;
-  ~FrameAhead() {
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      quit_ = true;
-    }
-    changed_.notify_all();
-    worker_.join();
-  }
-
-  // the frame at `at`, its maps drawn by `collider`, under way on the worker
-  void start(Collider& collider, double at) {
-    wait();
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      collider_ = &collider;
-      t = at;
-      busy_ = true;
-    }
-    changed_.notify_all();
-  }
-  // until the frame under way is ready; rethrows what the worker threw
-  void wait() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [this] { return !busy_; });
-    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
-  }
-
-  BodyFrame frame;
-  double t = -1;           // animation time of `frame`; < 0: none under way
-  double skinning_ms = 0;  // its evaluation's time (on the worker)
-  bool prepared = false;   // the collider prepared its update (else update_body does the work, in turn)
-
- private:
-  void work() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    for (;;) {
-      changed_.wait(lock, [this] { return busy_ || quit_; });
-      if (quit_) return;
-      lock.unlock();
-      try {
-        Stopwatch skin;
-        source_.frame_into(frame, t);
-        skinning_ms = skin.ms();
-        prepared = collider_->prepare_body(frame);
-      } catch (...) {
-        error_ = std::current_exception();
-      }
-      lock.lock();
-      busy_ = false;
-      changed_.notify_all();
-    }
-  }
-
-  const BodySource& source_;
-  Collider* collider_ = nullptr;
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  bool busy_ = false, quit_ = false;
-  std::exception_ptr error_;
-  std::thread worker_;  // last: started once the members it reads exist
-};
-
 // the queries of a frame come from the cloth's box grown by what it can move in `frames` frames (image space then
 // draws only the map rows that spans)
 void set_region(Collider& collider, const Simulator& sim, Real region_margin, int frames) {
@@ -679,10 +526,6 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   r.kinetic_energy = sim.kinetic_energy();
 }
 
-}  // namespace
-
-namespace {
-
 // "estimate: the animation about 1 min 05 s (60 frames, 6660 steps); sewing and draping at most about 2 min 25 s
 // (brute, 1234 queries/iteration, up to 7000 iterations; ...)" on stderr
 void print_estimate(const std::string& label, const Scene& scene, const RunResult& r, const Budget& b,
@@ -796,6 +639,8 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
 
 }  // namespace
 
+}  // namespace runner_detail
+
 std::string format_duration(double seconds) {
   if (!std::isfinite(seconds)) return "?";
   if (seconds < 0.95) return "under 1 s";
@@ -813,7 +658,7 @@ std::string format_duration(double seconds) {
 
 RunResult run_scene(const Scene& scene, const RunOptions& options) {
   try {
-    return run_unchecked(scene, options);
+    return runner_detail::run_unchecked(scene, options);
   } catch (const InputError& e) {
     // every input error of a run names the scene first, then what it referred to
     const std::string what = e.what();
