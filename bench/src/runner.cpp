@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "body_source.hpp"
+#include "budget.hpp"
 #include "clothbench/bench/body_between_frames.hpp"
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/io/errors.hpp"
@@ -20,6 +21,7 @@
 #include "clothbench/sim/sphere_collider.hpp"
 #include "clothbench/sim/timer.hpp"
 #include "frame_ahead.hpp"
+#include "progress.hpp"
 
 namespace clothbench {
 
@@ -141,64 +143,6 @@ std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::str
   return make_collider(name, scene.collider_options);
 }
 
-// progress on stderr, at most once a second, only after the first second, with an ETA: the time
-// per iteration so far times the iterations left of the plan (an upper bound: phases end early
-// when sewn or settled)
-class Progress {
- public:
-  Progress(bool on, std::string label, const Simulator& sim)
-      : on_(on), label_(std::move(label)), sim_(sim), start_(sim.timings().iterations) {}
-  // from now on, at most `iterations` more; the ETA takes the rate from here (a phase's iterations can cost far
-  // more than the last one's: an object-space collider after an image-space dresser)
-  void plan(long iterations) {
-    start_ = sim_.timings().iterations;
-    end_ = start_ + iterations;
-    phase_.restart();
-  }
-  template <class... A>
-  void report(const char* format, A... args) {
-    if (!on_ || clock_.ms() < next_ms_) return;
-    next_ms_ = clock_.ms() + 1000;
-    std::fprintf(stderr, "  [%s %.0f s, ETA <= %s] ", label_.c_str(), clock_.ms() / 1e3, eta().c_str());
-    std::fprintf(stderr, format, args...);
-    std::fputc('\n', stderr);
-  }
-
- private:
-  std::string eta() const {
-    const long now = sim_.timings().iterations, done = now - start_;
-    if (done <= 0) return "?";
-    return format_duration(phase_.ms() / 1e3 / double(done) * double(std::max(0L, end_ - now)));
-  }
-  bool on_;
-  std::string label_;
-  const Simulator& sim_;
-  long start_, end_ = 0;
-  Stopwatch clock_, phase_;
-  double next_ms_ = 1000;
-};
-
-// the simulator's cumulative timings as a phase's share
-struct PhaseClock {
-  const Simulator& sim;
-  SimTimings start = sim.timings();
-  Stopwatch wall;
-  double cpu_start = thread_cpu_ms();
-  void finish(PhaseResult& r) const {
-    r.iterations = sim.timings().iterations - start.iterations;
-    r.cdr_ms = sim.timings().cdr_ms - start.cdr_ms;
-    r.cs_ms = sim.timings().cs_ms - start.cs_ms;
-    r.limit_ms = sim.timings().limit_ms - start.limit_ms;
-    r.wall_ms = wall.ms();
-    r.cpu_ms = thread_cpu_ms() - cpu_start;
-  }
-};
-
-long iteration_cap(const Scene& scene, double seconds, double dt) {
-  const long by_time = static_cast<long>(std::ceil(seconds / dt));
-  return scene.stop.max_iterations > 0 ? std::min(by_time, scene.stop.max_iterations) : by_time;
-}
-
 void sew(const Scene& scene, Simulator& sim, Progress& progress, bool trace, RunResult& run) {
   PhaseResult& r = run.sew;
   if (!scene.stop.sew || sim.mesh().seam_pairs.cols() == 0) return;
@@ -235,97 +179,6 @@ void drape(const Scene& scene, Simulator& sim, Progress& progress, PhaseResult& 
     progress.report("drape: iteration %ld, RMS speed %.3f m/s", i + 1, double(rms_speed(sim)));
   }
   clock.finish(r);
-}
-
-// the animate phase's frames: `steps` iterations each, `lead_in` frames before the measured `frames`
-struct AnimationPlan {
-  long steps = 0, lead_in = 0, frames = 0;
-};
-
-AnimationPlan animation_plan(const Scene& scene, const BodySource& source, double dt) {
-  if (!source.moves()) return {};
-  const double frame_dt = 1.0 / scene.body.fps;
-  AnimationPlan p;
-  p.steps = std::max(1L, static_cast<long>(std::ceil(frame_dt / dt)));
-  p.lead_in = static_cast<long>(std::floor((source.start() - source.dress_time()) / frame_dt + 1e-9));
-  p.frames = static_cast<long>(std::floor((source.end() - source.start()) / frame_dt + 1e-9));
-  return p;
-}
-
-// the most iterations each phase may take; the animate phase's lead-in runs with the dressing collider
-struct Budget {
-  long sew = 0, drape = 0, animate = 0, lead_in = 0, frames = 0;
-  long total() const { return sew + drape + animate; }
-  long dressing() const { return sew + drape + lead_in; }
-};
-
-Budget iteration_budget(const Scene& scene, const BodySource& source, const Simulator& sim) {
-  Budget b;
-  if (scene.stop.sew && sim.mesh().seam_pairs.cols() > 0) b.sew = iteration_cap(scene, scene.stop.sew_max_s, sim.dt());
-  b.drape = iteration_cap(scene, scene.stop.drape_max_s, sim.dt());
-  const AnimationPlan a = animation_plan(scene, source, sim.dt());
-  b.frames = a.lead_in + a.frames;
-  b.animate = b.frames * a.steps;
-  b.lead_in = a.lead_in * a.steps;
-  return b;
-}
-
-// cloth simulation per iteration [ms]: a few iterations of a copy of the simulator without
-// collisions (the run never sees them)
-double cloth_ms_per_iteration(const Simulator& sim, Phase phase) {
-  Simulator copy = sim;
-  copy.set_collider(nullptr);
-  copy.set_phase(phase);
-  Stopwatch clock;
-  long n = 0;
-  bool alive = true;
-  do {
-    alive = copy.step();
-    ++n;
-  } while (alive && n < 3 && clock.ms() < 20);
-  return clock.ms() / double(n);
-}
-
-// collision detection per query point [ms]: batches of the cloth's points (spread over it) until
-// 50 ms or 256 points; colliders answer queries without keeping state (only their stats count them)
-double query_ms_per_point(const Points3& cloth, Collider& collider) {
-  const Eigen::Index count = std::min<Eigen::Index>(256, cloth.cols()),
-                     stride = cloth.cols() / std::max<Eigen::Index>(1, count);
-  Points3 sample(3, count);
-  for (Eigen::Index i = 0; i < count; ++i) sample.col(i) = cloth.col(i * stride);
-  std::vector<Contact> contacts(static_cast<std::size_t>(count));
-  Stopwatch clock;
-  Eigen::Index done = 0;
-  while (done < count && (done == 0 || clock.ms() < 50)) {
-    const Eigen::Index batch = std::min<Eigen::Index>(16, count - done);
-    collider.query(PointsView(sample.data() + 3 * done, static_cast<std::size_t>(batch)),
-                   {contacts.data() + done, static_cast<std::size_t>(batch)});
-    done += batch;
-  }
-  return done > 0 ? clock.ms() / double(done) : 0;
-}
-
-// the run's simulation time [s], extrapolated from a few measured iterations: cloth simulation and queries per
-// iteration (with the dressing collider up to the measured animation), plus one collider update per animation
-// frame as long as its set-up. Sewing and draping: their budget, a bound (they end once sewn and settled, the shipped
-// scenes at a tenth of it or less); the animation runs all its steps: a prediction
-struct Estimate {
-  double dressing_s = 0, animation_s = 0;
-};
-
-Estimate estimate_seconds(const Simulator& sim, Collider& dresser, Collider& collider, int query_points,
-                          const Budget& b, double update_ms) {
-  const double cloth_ms = cloth_ms_per_iteration(sim, b.sew > 0 ? Phase::kSew : Phase::kDrape);
-  const double dress_ms = query_ms_per_point(sim.positions(), dresser) * query_points;
-  const double measure_ms = &collider == &dresser || b.total() == b.dressing()
-                                ? dress_ms
-                                : query_ms_per_point(sim.positions(), collider) * query_points;
-  Estimate e;
-  e.dressing_s = (cloth_ms + dress_ms) * double(b.sew + b.drape) / 1e3;
-  e.animation_s = (cloth_ms * double(b.animate) + dress_ms * double(b.lead_in) +
-                   measure_ms * double(b.animate - b.lead_in) + update_ms * double(b.frames)) /
-                  1e3;
-  return e;
 }
 
 // the queries of a frame come from the cloth's box grown by what it can move in `frames` frames (image space then
@@ -526,21 +379,6 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   r.kinetic_energy = sim.kinetic_energy();
 }
 
-// "estimate: the animation about 1 min 05 s (60 frames, 6660 steps); sewing and draping at most about 2 min 25 s
-// (brute, 1234 queries/iteration, up to 7000 iterations; ...)" on stderr
-void print_estimate(const std::string& label, const Scene& scene, const RunResult& r, const Budget& b,
-                    const Estimate& e) {
-  std::string animation;
-  if (b.animate > 0)
-    animation = "the animation about " + format_duration(e.animation_s) + " (" + std::to_string(b.frames) +
-                " frames, " + std::to_string(b.animate) + " steps); ";
-  std::fprintf(stderr,
-               "  [%s] estimate: %ssewing and draping at most about %s (%s, %d queries/iteration, up to %ld "
-               "iterations; they end once sewn and settled, often far sooner)\n",
-               label.c_str(), animation.c_str(), format_duration(e.dressing_s).c_str(), scene.collider.c_str(),
-               r.query_points, b.sew + b.drape);
-}
-
 RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   RunResult r;
   r.scene = scene.name;
@@ -640,21 +478,6 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
 }  // namespace
 
 }  // namespace runner_detail
-
-std::string format_duration(double seconds) {
-  if (!std::isfinite(seconds)) return "?";
-  if (seconds < 0.95) return "under 1 s";
-  const long s = std::lround(seconds);
-  char buf[48];
-  if (s < 60) {
-    std::snprintf(buf, sizeof buf, "%ld s", s);
-  } else if (s < 3600) {
-    std::snprintf(buf, sizeof buf, "%ld min %ld s", s / 60, s % 60);
-  } else {
-    std::snprintf(buf, sizeof buf, "%ld h %02ld min", s / 3600, s / 60 % 60);
-  }
-  return buf;
-}
 
 RunResult run_scene(const Scene& scene, const RunOptions& options) {
   try {
