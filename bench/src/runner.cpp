@@ -12,6 +12,7 @@
 
 #include "body_source.hpp"
 #include "budget.hpp"
+#include "dressing.hpp"
 #include "clothbench/bench/body_between_frames.hpp"
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/io/errors.hpp"
@@ -23,6 +24,7 @@
 #include "frame_ahead.hpp"
 #include "measurement.hpp"
 #include "progress.hpp"
+#include "run_context.hpp"
 
 namespace clothbench {
 
@@ -107,70 +109,12 @@ void warn_start_inside(const Scene& scene, const ClothMesh& cloth, Collider& col
                  std::string(collider.name()).c_str());
 }
 
-// an attached vertex bound far from the body holds the garment in mid-air (an attached edge that sewing did not
-// bring to the body): warn
-void warn_attached_far(const Scene& scene, const Simulator& sim) {
-  constexpr Real kFar = 0.01f;  // [m]: a waistband rests on the body within a few millimetres
-  const Points3& offsets = sim.attachment_offsets();
-  long far = 0;
-  Real farthest = 0;
-  for (Eigen::Index i = 0; i < offsets.cols(); ++i) {
-    const Real d = offsets.col(i).norm();
-    farthest = std::max(farthest, d);
-    far += d > kFar;
-  }
-  if (far)
-    std::fprintf(stderr,
-                 "clothbench: warning: %s: %ld of %ld attached vertices are bound more than %.0f mm from the body (the "
-                 "farthest %.1f mm): they hold the garment in mid-air (check the pattern's attached edge and that "
-                 "sewing brings it to the body)\n",
-                 scene.path.c_str(), far, long(offsets.cols()), 1e3 * double(kFar), 1e3 * double(farthest));
-}
-
 std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
   if (name == "sphere") {
     if (!body.is_sphere()) throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
     return std::make_unique<SphereCollider>(body.sphere_center(0), scene.body.radius, scene.collider_options);
   }
   return make_collider(name, scene.collider_options);
-}
-
-void sew(const Scene& scene, Simulator& sim, Progress& progress, bool trace, RunResult& run) {
-  PhaseResult& r = run.sew;
-  if (!scene.stop.sew || sim.mesh().seam_pairs.cols() == 0) return;
-  sim.set_phase(Phase::kSew);
-  PhaseClock clock{sim};
-  const long cap = iteration_cap(scene, scene.stop.sew_max_s, sim.dt());
-  const Real gap = scene.stop.sewn_gap_mm * 1e-3f;
-  for (long i = 0; i < cap && !r.reached; ++i) {
-    Stopwatch iteration;
-    const bool alive = sim.step();
-    if (trace) run.sew_iteration_ms.push_back(float(iteration.ms()));
-    if (!alive) break;
-    r.reached = sim.seam_gap_max() <= gap || sim.sewn_fraction() >= 1;
-    progress.report("sew: iteration %ld, seam gap %.1f mm", i + 1, 1e3 * double(sim.seam_gap_max()));
-  }
-  clock.finish(r);
-}
-
-Real rms_speed(const Simulator& sim) {
-  const double mass = sim.masses().sum();
-  return mass > 0 ? Real(std::sqrt(2 * sim.kinetic_energy() / mass)) : 0;
-}
-
-void drape(const Scene& scene, Simulator& sim, Progress& progress, PhaseResult& r) {
-  sim.set_phase(Phase::kDrape);
-  PhaseClock clock{sim};
-  const long cap = iteration_cap(scene, scene.stop.drape_max_s, sim.dt());
-  const long window = std::max(1L, static_cast<long>(std::ceil(scene.stop.settle_window_s / sim.dt())));
-  long calm = 0;
-  for (long i = 0; i < cap && !r.reached; ++i) {
-    if (!sim.step()) break;
-    calm = rms_speed(sim) < scene.stop.settle_speed ? calm + 1 : 0;
-    r.reached = calm >= window;
-    progress.report("drape: iteration %ld, RMS speed %.3f m/s", i + 1, double(rms_speed(sim)));
-  }
-  clock.finish(r);
 }
 
 // the queries of a frame come from the cloth's box grown by what it can move in `frames` frames (image space then
@@ -356,17 +300,14 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   if (options.estimate_only) return r;
   // the estimate's timing queries are not the run's: its share of searches counts from here
   const CollideStats before = collider->stats();
-  // sew -> drape -> animate
+  // sew -> attach -> drape -> animate
   Progress progress(options.progress, label, *sim);
+  const RunContext run{scene, options, source, frame, *collider, dresser ? *dresser : *collider, *sim, progress};
   progress.plan(budget.total());
-  sew(scene, *sim, progress, options.trace, r);
-  // attachments (Durupinar 3.2) bind where sewing left the waistband, before gravity comes on
-  if (!sim->mesh().attached.empty()) {
-    sim->attach(frame);
-    warn_attached_far(scene, *sim);
-  }
+  sew(run, r);
+  attach(run);
   progress.plan(budget.drape + budget.animate);
-  if (!sim->divergence()) drape(scene, *sim, progress, r.drape);
+  if (!sim->divergence()) drape(run, r);
   progress.plan(budget.animate);
   if (!sim->divergence())
     animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options, r);
