@@ -2,7 +2,6 @@
 #include "clothbench/bench/runner.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -10,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "animation.hpp"
 #include "body_source.hpp"
 #include "budget.hpp"
 #include "dressing.hpp"
@@ -20,8 +20,6 @@
 #include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
-#include "clothbench/sim/timer.hpp"
-#include "frame_ahead.hpp"
 #include "measurement.hpp"
 #include "progress.hpp"
 #include "run_context.hpp"
@@ -117,122 +115,6 @@ std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::str
   return make_collider(name, scene.collider_options);
 }
 
-// the queries of a frame come from the cloth's box grown by what it can move in `frames` frames (image space then
-// draws only the map rows that spans)
-void set_region(Collider& collider, const Simulator& sim, Real region_margin, int frames) {
-  if (!(region_margin > 0)) return;
-  Box3 region = bounding_box(sim.positions());
-  region.min.array() -= Real(frames) * region_margin, region.max.array() += Real(frames) * region_margin;
-  collider.set_query_region(region);
-}
-
-// one body frame: evaluate (timed), update the collider, move attachments, then `steps` cloth steps spread over
-// the frame; with body.move_between_frames each step sees the body where it was at the step's time
-// (BodyBetweenFrames), else the frame's end pose throughout. With `ahead`, a frame at t prepared during the last
-// one is taken from it, and the frame at `t_next` (> 0) is prepared while this one's steps run (its map rows from
-// the cloth's box now, grown by two frames' margin)
-bool advance_frame(const BodySource& source, double t, double frame_dt, long steps, Simulator& sim,
-                   BodyBetweenFrames& collider, bool between, Real region_margin, BodyFrame& frame, double& skinning_ms,
-                   FrameAhead* ahead, double t_next) {
-  // a frame prepared ahead is always the next one asked for (else the collider would make stale maps current)
-  if (ahead && ahead->t >= 0 && ahead->t != t)
-    throw std::logic_error("advance_frame: the frame prepared ahead is not next");
-  if (ahead && ahead->t == t) {
-    std::swap(frame, ahead->frame);
-    ahead->t = -1;
-    skinning_ms += ahead->skinning_ms;
-    if (!ahead->prepared) set_region(collider, sim, region_margin, 1);
-  } else {
-    Stopwatch skin;
-    source.frame_into(frame, t);
-    skinning_ms += skin.ms();
-    set_region(collider, sim, region_margin, 1);
-  }
-  collider.update_body(frame);
-  if (ahead && t_next > 0) {
-    set_region(collider, sim, region_margin, 2);
-    ahead->start(collider, t_next);
-  }
-  const bool attached = !sim.mesh().attached.empty();
-  if (attached && !between) sim.follow_attachments(frame);
-  bool alive = true;
-  sim.set_collider(&collider);
-  for (long s = 0; s < steps && alive; ++s) {
-    const Real tau = between ? Real(frame_dt * double(steps - 1 - s) / double(steps)) : Real(0);
-    collider.set_time_before_pose(tau);
-    // attached vertices start the step where the body had them a step before tau, and the step's dt v brings
-    // them to tau (held once per frame, they would run a frame ahead of the body and jump back)
-    if (attached && between) sim.follow_attachments(frame, tau + sim.dt());
-    alive = sim.step();
-  }
-  if (ahead) ahead->wait();
-  return alive;
-}
-
-// the lead-in (dress_at_s -> start_s, with the dressing collider, not measured), then the measured window
-void animate(const Scene& scene, const BodySource& source, Simulator& sim, Collider& collider, Collider& dresser,
-             BodyFrame& frame, Progress& progress, const RunOptions& options, RunResult& r) {
-  if (!source.moves()) return;
-  sim.set_phase(Phase::kAnimate);
-  const double frame_dt = 1.0 / scene.body.fps;
-  const auto [steps, lead_in, frames] = animation_plan(scene, source, sim.dt());
-  r.steps_per_frame = double(steps);
-  double unmeasured_ms = 0;
-  bool alive = true;
-  const Real tol = scene.collider_options.tol;
-  const bool between = scene.body.move_between_frames;
-  const Real skin = Real(scene.body.skin_mm * 1e-3);
-  const Real margin = Real(scene.collider_options.query_margin_mm * 1e-3);
-  BodyBetweenFrames dresser_between(dresser, tol, skin), collider_between(collider, tol, skin);
-  std::optional<FrameAhead> lead_ahead, ahead;
-  if (scene.body.prepare_ahead) lead_ahead.emplace(source), ahead.emplace(source);
-  FrameAhead* const lead_pipe = lead_ahead ? &*lead_ahead : nullptr;
-  FrameAhead* const pipe = ahead ? &*ahead : nullptr;
-  const auto lead_in_time = [&](long f) { return source.dress_time() + double(f) * frame_dt; };
-  const auto window_time = [&](long f) { return source.start() + double(f) * frame_dt; };
-  for (long f = 1; f <= lead_in && alive; ++f) {
-    alive = advance_frame(source, lead_in_time(f), frame_dt, steps, sim, dresser_between, between, margin, frame,
-                          unmeasured_ms, lead_pipe, f < lead_in ? lead_in_time(f + 1) : 0);
-    progress.report("animate (lead-in): frame %ld of %ld", f, lead_in);
-  }
-  collider.update_body(frame);
-  r.window_seam_gap_mm = 1e3 * double(sim.seam_gap_max());
-  progress.plan(frames * steps);  // the measured window's collider sets the pace from here
-  PhaseClock clock{sim};
-  const CollideStats before = collider.stats();
-  double not_animation_ms = 0, not_animation_cpu_ms = 0;
-  BodyFrame exact_scratch;  // the exact body of a frame, with a collision proxy
-  for (long f = 1; f <= frames && alive; ++f) {
-    const double t = window_time(f);
-    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, margin, frame, r.skinning_ms,
-                          pipe, f < frames ? window_time(f + 1) : 0);
-    r.prepared_frames += pipe && f < frames && pipe->prepared;
-    ++r.frames;
-    Stopwatch outside;  // the strain, the oracle and the caller's callback are not the animation's time
-    const double outside_cpu = thread_cpu_ms();
-    const StrainStats strain = sim.strain();
-    r.animate_strain_max = std::max(r.animate_strain_max, double(strain.max));
-    const bool measured = options.measure_frames && alive;
-    if (measured || options.on_frame) {  // the exact body only when something looks at it
-      const BodyFrame& exact = source.exact(frame, exact_scratch);
-      if (measured) measure_frame(exact, sim, strain, t, r);
-      if (options.on_frame) options.on_frame(f, t, exact, sim);
-    }
-    not_animation_ms += outside.ms();
-    not_animation_cpu_ms += thread_cpu_ms() - outside_cpu;
-    progress.report("animate: frame %ld of %ld (t = %.2f s)", f, frames, t);
-  }
-  sim.set_collider(&collider);  // the wrappers end here
-  r.animate.reached = alive && r.frames == frames;
-  const CollideStats after = collider.stats();
-  r.collider_update_ms = after.update_ms - before.update_ms;
-  r.collider_queries = after.queries - before.queries;
-  r.collider_query_ms = after.query_ms - before.query_ms;
-  clock.finish(r.animate);
-  r.animate.wall_ms -= not_animation_ms;
-  r.animate.cpu_ms -= not_animation_cpu_ms;
-}
-
 RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   RunResult r;
   r.scene = scene.name;
@@ -309,8 +191,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   progress.plan(budget.drape + budget.animate);
   if (!sim->divergence()) drape(run, r);
   progress.plan(budget.animate);
-  if (!sim->divergence())
-    animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options, r);
+  if (!sim->divergence()) animate(run, r);
   r.divergence = sim->divergence();
   const CollideStats stats = collider->stats();
   r.threads = r.prepared_frames > 0 ? std::max(stats.threads, 2) : stats.threads;
