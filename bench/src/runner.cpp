@@ -1,18 +1,20 @@
-// run_scene: wires body, garments, simulator, collider and oracle (the only place that does).
+// run_scene: wires body, garments, simulator, collider and oracle (the only place that does); the phases are
+// dressing.cpp and animation.cpp, the measurements measurement.cpp.
 #include "clothbench/bench/runner.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "animation.hpp"
 #include "body_source.hpp"
 #include "budget.hpp"
-#include "dressing.hpp"
 #include "clothbench/bench/body_between_frames.hpp"
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/io/errors.hpp"
@@ -20,6 +22,7 @@
 #include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
+#include "dressing.hpp"
 #include "measurement.hpp"
 #include "progress.hpp"
 #include "run_context.hpp"
@@ -60,6 +63,49 @@ namespace runner_detail {
 
 namespace {
 
+// the body, the colliders and the simulator of one run, made in this order (and unmade in reverse)
+struct Rig {
+  explicit Rig(const Scene& scene) : source(scene) {}
+  Collider& dressing_collider() const { return dresser ? *dresser : *collider; }
+
+  BodySource source;
+  BodyFrame frame;          // the body as the colliders see it (the collision proxy's, with one)
+  BodyFrame exact_scratch;  // the exact body of `frame`, with a collision proxy
+  std::unique_ptr<Collider> collider, dresser;  // under test; collider.dress_with's (null without)
+  std::optional<Simulator> sim;
+  std::optional<BodyBetweenFrames> dressing;    // the dressing collider as the simulator sees it
+};
+
+// the scene as run, in the result
+RunResult configuration(const Scene& scene) {
+  RunResult r;
+  r.scene = scene.name;
+  r.collider = scene.collider;
+  r.integrator = scene.solver.integrator;
+  r.regime = to_string(scene.solver.regime);
+  r.config_hash = config_hash(scene);
+  r.strain_threshold = scene.solver.limit == "none" ? 0 : double(scene.solver.threshold);
+  return r;
+}
+
+// the body at the dressing pose (its triangles, and the collision proxy's with its deviation, in the result);
+// returns the exact body there
+const BodyFrame& pose_body(Rig& rig, RunResult& r) {
+  rig.source.frame_into(rig.frame, rig.source.dress_time());
+  // the body stands still while the garment is sewn and draped on it: the clip's velocity at that pose (the
+  // lead-in starts moving at once) is not the body's there (it stays `moving`: the colliders keep what a
+  // moving body needs, velocity maps or a refittable hierarchy, for the animation)
+  rig.frame.velocities.setZero();
+  const BodyFrame& exact = rig.source.exact(rig.frame, rig.exact_scratch);
+  r.body_triangles = exact.triangles.cols();
+  if (rig.source.has_proxy()) {
+    r.collision_triangles = rig.frame.triangles.cols();
+    r.proxy_deviation_mm = proxy_deviation_mm(rig.frame, exact);
+  }
+  return exact;
+}
+
+// every garment of the scene meshed and placed on the exact body (a jittered placement moved by its seed's offset)
 ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   if (scene.garments.empty()) throw InputError(located(scene.path, 0, "the scene has no [[garment]]"));
   ClothMesh cloth;
@@ -88,6 +134,26 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   return cloth;
 }
 
+std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
+  if (name == "sphere") {
+    if (!body.is_sphere()) throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
+    return std::make_unique<SphereCollider>(body.sphere_center(0), scene.body.radius, scene.collider_options);
+  }
+  return make_collider(name, scene.collider_options);
+}
+
+// the collider under test on the dressing pose (its set-up time in the result) and, with collider.dress_with,
+// the dressing one
+void set_up_colliders(const Scene& scene, Rig& rig, RunResult& r) {
+  rig.collider = make_scene_collider(scene, scene.collider, rig.source);
+  rig.collider->set_body(rig.frame);
+  r.setup_ms = rig.collider->stats().setup_ms;
+  if (!scene.dress_with.empty() && scene.dress_with != scene.collider) {
+    rig.dresser = make_scene_collider(scene, scene.dress_with, rig.source);
+    rig.dresser->set_body(rig.frame);
+  }
+}
+
 // a garment placed partly inside the body starts sewing from a tangle the push-out may not undo: say so, with how
 // much and how deep (as the collider that dresses it answers, one query of every cloth vertex)
 void warn_start_inside(const Scene& scene, const ClothMesh& cloth, Collider& collider) {
@@ -107,70 +173,70 @@ void warn_start_inside(const Scene& scene, const ClothMesh& cloth, Collider& col
                  std::string(collider.name()).c_str());
 }
 
-std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
-  if (name == "sphere") {
-    if (!body.is_sphere()) throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
-    return std::make_unique<SphereCollider>(body.sphere_center(0), scene.body.radius, scene.collider_options);
-  }
-  return make_collider(name, scene.collider_options);
-}
-
-RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
-  RunResult r;
-  r.scene = scene.name;
-  r.collider = scene.collider;
-  r.integrator = scene.solver.integrator;
-  r.regime = to_string(scene.solver.regime);
-  r.config_hash = config_hash(scene);
-  r.strain_threshold = scene.solver.limit == "none" ? 0 : double(scene.solver.threshold);
-  // body, cloth, collider, simulator
-  const BodySource source(scene);
-  BodyFrame frame;
-  source.frame_into(frame, source.dress_time());
-  // the body stands still while the garment is sewn and draped on it: the clip's velocity at that pose (the
-  // lead-in starts moving at once) is not the body's there (it stays `moving`: the colliders keep what a
-  // moving body needs, velocity maps or a refittable hierarchy, for the animation)
-  frame.velocities.setZero();
-  BodyFrame exact_scratch;
-  const BodyFrame& exact = source.exact(frame, exact_scratch);
-  r.body_triangles = exact.triangles.cols();
-  if (source.has_proxy()) {
-    r.collision_triangles = frame.triangles.cols();
-    r.proxy_deviation_mm = proxy_deviation_mm(frame, exact);
-  }
-  ClothMesh cloth = build_cloth(scene, exact);
-  std::unique_ptr<Collider> collider = make_scene_collider(scene, scene.collider, source);
-  collider->set_body(frame);
-  r.setup_ms = collider->stats().setup_ms;
-  std::unique_ptr<Collider> dresser;
-  if (!scene.dress_with.empty() && scene.dress_with != scene.collider) {
-    dresser = make_scene_collider(scene, scene.dress_with, source);
-    dresser->set_body(frame);
-  }
-  warn_start_inside(scene, cloth, dresser ? *dresser : *collider);
-  std::optional<Simulator> sim;
+// the simulator of the cloth, dressing with the dressing collider (its sizes and steps in the result)
+void set_up_simulator(const Scene& scene, ClothMesh cloth, Rig& rig, RunResult& r) {
   try {
-    sim.emplace(std::move(cloth), scene.material, scene.solver);
+    rig.sim.emplace(std::move(cloth), scene.material, scene.solver);
   } catch (const std::invalid_argument& e) {
     throw InputError(located(scene.path, 0, e.what()));
   }
+  const Simulator& sim = *rig.sim;
   // the body is answered body.skin_mm thicker while dressing too (the animation wraps its colliders the same way)
-  BodyBetweenFrames dressing(dresser ? *dresser : *collider, scene.collider_options.tol,
-                             Real(scene.body.skin_mm * 1e-3));
-  sim->set_collider(&dressing);
-  r.vertices = sim->mesh().vertex_count();
-  r.query_points = r.vertices + (scene.solver.face_queries ? static_cast<int>(sim->mesh().quads.cols()) : 0);
-  r.dt_s = sim->dt();
-  r.dt_bound_s = sim->stable_dt();
-  r.dt_spectral_s = sim->spectral_dt();
-  r.k_structural = sim->stiffness(SpringKind::kStructural);
+  rig.dressing.emplace(rig.dressing_collider(), scene.collider_options.tol, Real(scene.body.skin_mm * 1e-3));
+  rig.sim->set_collider(&*rig.dressing);
+  r.vertices = sim.mesh().vertex_count();
+  r.query_points = r.vertices + (scene.solver.face_queries ? static_cast<int>(sim.mesh().quads.cols()) : 0);
+  r.dt_s = sim.dt();
+  r.dt_bound_s = sim.stable_dt();
+  r.dt_spectral_s = sim.spectral_dt();
+  r.k_structural = sim.stiffness(SpringKind::kStructural);
+}
+
+// sew -> attach -> drape -> animate, the ETA planned over what is left; a diverged simulation stops there
+void run_phases(const RunContext& run, const Budget& budget, RunResult& r) {
+  run.progress.plan(budget.total());
+  sew(run, r);
+  attach(run);
+  run.progress.plan(budget.drape + budget.animate);
+  if (!run.sim.divergence()) drape(run, r);
+  run.progress.plan(budget.animate);
+  if (!run.sim.divergence()) animate(run, r);
+  r.divergence = run.sim.divergence();
+}
+
+// after the phases: the collider's threads and share of searches (counted from `before`), whether the run
+// converged, and the end state measured against the exact body
+void finish(const RunContext& run, BodyFrame& exact_scratch, const CollideStats& before, RunResult& r) {
+  const Scene& scene = run.scene;
+  const Simulator& sim = run.sim;
+  const CollideStats stats = run.collider.stats();
+  r.threads = r.prepared_frames > 0 ? std::max(stats.threads, 2) : stats.threads;
+  r.device = run.collider.device();
+  const std::int64_t points = stats.points - before.points, searches = stats.searches - before.searches;
+  r.search_share = points > 0 ? double(searches) / double(points) : 0;
+  r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim.mesh().seam_pairs.cols() == 0) &&
+                (r.drape.reached || scene.stop.drape_max_s == 0) && (!run.source.moves() || r.animate.reached);
+  r.final_body = run.source.exact(run.frame, exact_scratch);
+  if (!r.divergence) measure(scene, sim, r);
+  r.mesh = sim.mesh();
+  r.mesh.positions = sim.positions();
+}
+
+RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
+  RunResult r = configuration(scene);
+  // body, cloth, collider, simulator
+  Rig rig(scene);
+  ClothMesh cloth = build_cloth(scene, pose_body(rig, r));
+  set_up_colliders(scene, rig, r);
+  warn_start_inside(scene, cloth, rig.dressing_collider());
+  set_up_simulator(scene, std::move(cloth), rig, r);
   // up front: how long it may take
   const std::string label = options.label.empty() ? scene.name + "/" + scene.collider : options.label;
-  const Budget budget = iteration_budget(scene, source, *sim);
+  const Budget budget = iteration_budget(scene, rig.source, *rig.sim);
   r.iteration_budget = budget.total();
   Estimate estimate;
   if (options.progress || options.estimate_only) {
-    estimate = estimate_seconds(*sim, dresser ? *dresser : *collider, *collider, r.query_points, budget, r.setup_ms);
+    estimate = estimate_seconds(*rig.sim, rig.dressing_collider(), *rig.collider, r.query_points, budget, r.setup_ms);
     r.estimate_s = estimate.dressing_s + estimate.animation_s;
   }
   // up front where the run may be long: the animation's prediction, or the dressing's bound ten times over (a bound
@@ -181,29 +247,12 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
     print_estimate(label, scene, r, budget, estimate);
   if (options.estimate_only) return r;
   // the estimate's timing queries are not the run's: its share of searches counts from here
-  const CollideStats before = collider->stats();
-  // sew -> attach -> drape -> animate
-  Progress progress(options.progress, label, *sim);
-  const RunContext run{scene, options, source, frame, *collider, dresser ? *dresser : *collider, *sim, progress};
-  progress.plan(budget.total());
-  sew(run, r);
-  attach(run);
-  progress.plan(budget.drape + budget.animate);
-  if (!sim->divergence()) drape(run, r);
-  progress.plan(budget.animate);
-  if (!sim->divergence()) animate(run, r);
-  r.divergence = sim->divergence();
-  const CollideStats stats = collider->stats();
-  r.threads = r.prepared_frames > 0 ? std::max(stats.threads, 2) : stats.threads;
-  r.device = collider->device();
-  const std::int64_t points = stats.points - before.points, searches = stats.searches - before.searches;
-  r.search_share = points > 0 ? double(searches) / double(points) : 0;
-  r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&
-                (r.drape.reached || scene.stop.drape_max_s == 0) && (!source.moves() || r.animate.reached);
-  r.final_body = source.exact(frame, exact_scratch);
-  if (!r.divergence) measure(scene, *sim, r);
-  r.mesh = sim->mesh();
-  r.mesh.positions = sim->positions();
+  const CollideStats before = rig.collider->stats();
+  Progress progress(options.progress, label, *rig.sim);
+  const RunContext run{scene, options, rig.source, rig.frame, *rig.collider, rig.dressing_collider(), *rig.sim,
+                       progress};
+  run_phases(run, budget, r);
+  finish(run, rig.exact_scratch, before, r);
   return r;
 }
 
