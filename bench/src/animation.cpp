@@ -153,7 +153,7 @@ void animate(const RunContext& run, RunResult& r) {
   BodyBetweenFrames dresser_between(run.dresser, tol, skin), collider_between(run.collider, tol, skin);
   std::optional<FrameAhead> lead_ahead, ahead;
   if (scene.body.prepare_ahead) lead_ahead.emplace(run.source), ahead.emplace(run.source);
-  double unmeasured_ms = 0;
+  double unmeasured_ms = 0;  // the lead-in's skinning time: not the measured animation's
   FramePass lead{dresser_between, lead_ahead ? &*lead_ahead : nullptr, unmeasured_ms};
   lead_in(a, lead);
   // the collider under test takes the body where the lead-in left it; its window sets the pace from here
