@@ -156,54 +156,53 @@ void set_times(nlohmann::json& row, double real_ms, double cpu_ms, std::string u
   row["time_unit"] = unit;
 }
 
-nlohmann::json result_row(const RunResult& r, const std::string& name) {
-  nlohmann::json row{{"name", name},
-                     {"run_type", "iteration"},
-                     {"iterations", r.iterations()},
-                     {"vertices", r.vertices},
-                     {"query_points", r.query_points},
-                     {"body_triangles", r.body_triangles},
-                     {"collision_triangles", r.collision_triangles},
-                     {"proxy_deviation_mm", r.proxy_deviation_mm},
-                     {"total_s", r.total_s()},
-                     {"setup_ms", r.setup_ms},
-                     {"cdr_ms", r.cdr_ms_per_iteration()},
-                     {"cs_ms", r.cs_ms_per_iteration()},
-                     {"limit_ms", r.limit_ms_per_iteration()},
-                     {"scene", r.scene},
-                     {"collider", r.collider},
-                     {"integrator", r.integrator},
-                     {"regime", r.regime},
-                     {"dt_ms", 1e3 * r.dt_s},
-                     {"dt_bound_ms", 1e3 * r.dt_bound_s},
-                     {"dt_spectral_ms", 1e3 * r.dt_spectral_s},
-                     {"sew_iterations", r.sew.iterations},
-                     {"sewn", r.sew.reached ? 1 : 0},
-                     {"drape_iterations", r.drape.iterations},
-                     {"threads", r.threads},
-                     {"converged", r.converged ? 1 : 0},
-                     {"diverged", r.divergence ? 1 : 0},
-                     {"meets_limits", limit_misses(r).empty() ? 1 : 0}};
-  set_times(row, r.ms_per_iteration(), r.cpu_ms_per_iteration());
-  if (!r.config_hash.empty()) row["config_hash"] = r.config_hash;
-  if (!r.device.empty()) row["device"] = r.device;
-  if (r.search_share > 0) row["search_share"] = r.search_share;
-  if (r.frames > 0) {
-    row["frames"] = r.frames;
-    row["fps"] = r.animate.wall_ms > 0 ? 1e3 * double(r.frames) / r.animate.wall_ms : 0.0;
-    row["steps_per_frame"] = r.steps_per_frame;
-    row["skinning_ms_per_frame"] = r.skinning_ms / double(r.frames);
-    row["collider_update_ms_per_frame"] = r.collider_update_ms / double(r.frames);
-    row["animate_iterations"] = r.animate.iterations;
-    row["prepared_frames"] = r.prepared_frames;
-  }
-  if (r.divergence) {
-    row["diverged_iteration"] = r.divergence->iteration;
-    row["diverged_phase"] = to_string(r.divergence->phase);
-    row["diverged_vertex"] = r.divergence->vertex;
-    row["diverged_reason"] = r.divergence->reason;
-    return row;  // no accuracy for a diverged run
-  }
+namespace {
+
+// the fields every run has: sizes, times per iteration, the configuration, the phases and the verdicts
+nlohmann::json run_fields(const RunResult& r, const std::string& name) {
+  return {{"name", name},
+          {"run_type", "iteration"},
+          {"iterations", r.iterations()},
+          {"vertices", r.vertices},
+          {"query_points", r.query_points},
+          {"body_triangles", r.body_triangles},
+          {"collision_triangles", r.collision_triangles},
+          {"proxy_deviation_mm", r.proxy_deviation_mm},
+          {"total_s", r.total_s()},
+          {"setup_ms", r.setup_ms},
+          {"cdr_ms", r.cdr_ms_per_iteration()},
+          {"cs_ms", r.cs_ms_per_iteration()},
+          {"limit_ms", r.limit_ms_per_iteration()},
+          {"scene", r.scene},
+          {"collider", r.collider},
+          {"integrator", r.integrator},
+          {"regime", r.regime},
+          {"dt_ms", 1e3 * r.dt_s},
+          {"dt_bound_ms", 1e3 * r.dt_bound_s},
+          {"dt_spectral_ms", 1e3 * r.dt_spectral_s},
+          {"sew_iterations", r.sew.iterations},
+          {"sewn", r.sew.reached ? 1 : 0},
+          {"drape_iterations", r.drape.iterations},
+          {"threads", r.threads},
+          {"converged", r.converged ? 1 : 0},
+          {"diverged", r.divergence ? 1 : 0},
+          {"meets_limits", limit_misses(r).empty() ? 1 : 0}};
+}
+
+// an animated run: its frames, their rate and what each cost
+void add_animation_fields(const RunResult& r, nlohmann::json& row) {
+  row["frames"] = r.frames;
+  row["fps"] = r.animate.wall_ms > 0 ? 1e3 * double(r.frames) / r.animate.wall_ms : 0.0;
+  row["steps_per_frame"] = r.steps_per_frame;
+  row["skinning_ms_per_frame"] = r.skinning_ms / double(r.frames);
+  row["collider_update_ms_per_frame"] = r.collider_update_ms / double(r.frames);
+  row["animate_iterations"] = r.animate.iterations;
+  row["prepared_frames"] = r.prepared_frames;
+}
+
+// the end state against the exact body, and with every animation frame measured (RunOptions::measure_frames) the
+// worst and the mean frame
+void add_accuracy_fields(const RunResult& r, nlohmann::json& row) {
   row["inside_pct"] = r.accuracy.inside_pct;
   row["depth_max_mm"] = r.accuracy.depth_max_mm;
   row["depth_p95_mm"] = r.accuracy.depth_p95_mm;
@@ -219,17 +218,34 @@ nlohmann::json result_row(const RunResult& r, const std::string& name) {
   row["strain_over"] = r.strain_over;
   row["strain_max_where"] = r.strain_max_where;
   row["kinetic_energy_j"] = r.kinetic_energy;
-  if (!r.frame_samples.empty()) {
-    // every animation frame measured (RunOptions::measure_frames): the worst and the mean frame
-    row["frames_measured"] = r.frame_samples.size();
-    row["worst_frame_inside_pct"] = r.frame_max(&FrameSample::inside_pct);
-    row["mean_frame_inside_pct"] = r.frame_mean(&FrameSample::inside_pct);
-    row["worst_frame_depth_max_mm"] = r.frame_max(&FrameSample::depth_max_mm);
-    row["worst_frame_crossings_pct"] = r.frame_max(&FrameSample::crossings_pct);
-    row["mean_frame_crossings_pct"] = r.frame_mean(&FrameSample::crossings_pct);
-    row["worst_frame_strain_max"] = r.frame_max(&FrameSample::strain_max);
-    row["depth_max_where"] = r.depth_max_where;
+  if (r.frame_samples.empty()) return;
+  row["frames_measured"] = r.frame_samples.size();
+  row["worst_frame_inside_pct"] = r.frame_max(&FrameSample::inside_pct);
+  row["mean_frame_inside_pct"] = r.frame_mean(&FrameSample::inside_pct);
+  row["worst_frame_depth_max_mm"] = r.frame_max(&FrameSample::depth_max_mm);
+  row["worst_frame_crossings_pct"] = r.frame_max(&FrameSample::crossings_pct);
+  row["mean_frame_crossings_pct"] = r.frame_mean(&FrameSample::crossings_pct);
+  row["worst_frame_strain_max"] = r.frame_max(&FrameSample::strain_max);
+  row["depth_max_where"] = r.depth_max_where;
+}
+
+}  // namespace
+
+nlohmann::json result_row(const RunResult& r, const std::string& name) {
+  nlohmann::json row = run_fields(r, name);
+  set_times(row, r.ms_per_iteration(), r.cpu_ms_per_iteration());
+  if (!r.config_hash.empty()) row["config_hash"] = r.config_hash;
+  if (!r.device.empty()) row["device"] = r.device;
+  if (r.search_share > 0) row["search_share"] = r.search_share;
+  if (r.frames > 0) add_animation_fields(r, row);
+  if (r.divergence) {
+    row["diverged_iteration"] = r.divergence->iteration;
+    row["diverged_phase"] = to_string(r.divergence->phase);
+    row["diverged_vertex"] = r.divergence->vertex;
+    row["diverged_reason"] = r.divergence->reason;
+    return row;  // no accuracy for a diverged run
   }
+  add_accuracy_fields(r, row);
   return row;
 }
 

@@ -1,29 +1,31 @@
-// run_scene: wires body, garments, simulator, collider and oracle (the only place that does).
+// run_scene: wires body, garments, simulator, collider and oracle (the only place that does); the phases are
+// dressing.cpp and animation.cpp, the measurements measurement.cpp.
 #include "clothbench/bench/runner.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <condition_variable>
+#include <cstdint>
 #include <cstdio>
-#include <exception>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <set>
 #include <random>
-#include <thread>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "animation.hpp"
+#include "body_source.hpp"
+#include "budget.hpp"
 #include "clothbench/bench/body_between_frames.hpp"
 #include "clothbench/bench/registry.hpp"
-#include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/errors.hpp"
 #include "clothbench/io/pattern_file.hpp"
 #include "clothbench/io/pattern_loader.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
-#include "clothbench/sim/timer.hpp"
+#include "dressing.hpp"
+#include "measurement.hpp"
+#include "progress.hpp"
+#include "run_context.hpp"
 
 namespace clothbench {
 
@@ -57,97 +59,53 @@ const RunResult& median_run(const std::vector<RunResult>& runs) {
   return *by_time[by_time.size() / 2];
 }
 
+namespace runner_detail {
+
 namespace {
 
-// what loading the body changed or warns about (body_loader.hpp), once per file and process
-void print_notes(const BodyModel& model) {
-  static std::set<std::string> printed;
-  if (!printed.insert(model.path()).second) return;
-  for (const std::string& n : model.notes())
-    std::fprintf(stderr, "clothbench: %s: %s%s\n", model.path().c_str(), n.rfind("warning: ", 0) == 0 ? "" : "note: ",
-                 n.c_str());
-}
+// the body, the colliders and the simulator of one run, made in this order (and unmade in reverse)
+struct Rig {
+  explicit Rig(const Scene& scene) : source(scene) {}
+  Collider& dressing_collider() const { return dresser ? *dresser : *collider; }
 
-// the body and its motion: a (possibly animated) mesh, or a sphere moving at constant velocity
-class BodySource {
- public:
-  BodySource(const Scene& scene) : spec_(scene.body) {
-    if (spec_.shape == "sphere") {
-      if (spec_.collision_triangles > 0)
-        throw InputError(located(scene.path, 0, "body.collision_triangles needs a mesh body, not a sphere"));
-      sphere_ = make_sphere_body(Vec3::Zero(), spec_.radius, 48, 96);
-      t1_ = spec_.move_s;
-      return;
-    }
-    model_.emplace(load_body(resolve_scene_path(scene, spec_.file)));
-    print_notes(*model_);
-    if (spec_.collision_triangles > 0) proxy_.emplace(model_->simplified(spec_.collision_triangles));
-    if (spec_.animation.empty()) return;
-    anim_ = model_->animation_index(spec_.animation);
-    const double clip = model_->animations()[anim_].duration_s;
-    dress_ = spec_.dress_at_s;
-    t0_ = spec_.start_s;
-    t1_ = spec_.end_s < 0 ? clip : spec_.end_s;
-    if (!(dress_ <= t0_ && t0_ < t1_) || t1_ > clip + 1e-9)
-      throw InputError(located(scene.path, 0, "body: need dress_at_s <= start_s < end_s inside the clip [0, " +
-                                                   std::to_string(clip) + "] s, got " + std::to_string(dress_) +
-                                                   ", " + std::to_string(t0_) + ", " + std::to_string(t1_)));
-  }
-
-  bool moves() const { return t1_ > t0_; }
-  double dress_time() const { return dress_; }
-  double start() const { return t0_; }
-  double end() const { return t1_; }
-  bool is_sphere() const { return !model_; }
-  Vec3 sphere_center(double t) const { return spec_.center + spec_.velocity * Real(t); }
-
-  // the frame the colliders see at time t (animation time, or seconds of sphere motion): the collision proxy's when
-  // there is one (body.collision_triangles)
-  void frame_into(BodyFrame& out, double t) const { frame_into(proxy_ ? proxy_ : model_, out, t); }
-  // the exact body at `used`'s time, for the oracle and the pictures: `used` itself without a proxy, else `scratch`
-  const BodyFrame& exact(const BodyFrame& used, BodyFrame& scratch) const {
-    if (!proxy_) return used;
-    frame_into(model_, scratch, used.time_s);
-    return scratch;
-  }
-  bool has_proxy() const { return proxy_.has_value(); }
-
- private:
-  void frame_into(const std::optional<BodyModel>& model, BodyFrame& out, double t) const {
-    if (model) {
-      if (anim_ < 0) {
-        out = model->rest();
-      } else {
-        model->frame_into(out, anim_, t, spec_.walk_in_place);
-      }
-      return;
-    }
-    // at rest while dressing (t = 0), moving at constant velocity during the animation
-    out = sphere_;
-    out.positions.colwise() += sphere_center(t);
-    if (t > 0) {
-      out.velocities.colwise() = spec_.velocity;
-      out.moving = true;
-    }
-  }
-
- private:
-  BodySpec spec_;
-  std::optional<BodyModel> model_, proxy_;
-  BodyFrame sphere_;
-  int anim_ = -1;
-  double dress_ = 0, t0_ = 0, t1_ = 0;
+  BodySource source;
+  BodyFrame frame;          // the body as the colliders see it (the collision proxy's, with one)
+  BodyFrame exact_scratch;  // the exact body of `frame`, with a collision proxy
+  std::unique_ptr<Collider> collider, dresser;  // under test; collider.dress_with's (null without)
+  std::optional<Simulator> sim;
+  std::optional<BodyBetweenFrames> dressing;    // the dressing collider as the simulator sees it
 };
 
-// the largest distance of an exact body vertex from the collision proxy's surface [mm]
-double proxy_deviation_mm(const BodyFrame& proxy, const BodyFrame& exact) {
-  std::vector<Real> d;
-  Oracle(proxy).signed_distance(exact.positions, d);
-  Real m = 0;
-  for (const Real x : d) m = std::max(m, std::abs(x));
-  return 1e3 * double(m);
+// the scene as run, in the result
+RunResult configuration(const Scene& scene) {
+  RunResult r;
+  r.scene = scene.name;
+  r.collider = scene.collider;
+  r.integrator = scene.solver.integrator;
+  r.regime = to_string(scene.solver.regime);
+  r.config_hash = config_hash(scene);
+  r.strain_threshold = scene.solver.limit == "none" ? 0 : double(scene.solver.threshold);
+  return r;
 }
 
+// the body at the dressing pose (its triangles, and the collision proxy's with its deviation, in the result);
+// returns the exact body there
+const BodyFrame& pose_body(Rig& rig, RunResult& r) {
+  rig.source.frame_into(rig.frame, rig.source.dress_time());
+  // the body stands still while the garment is sewn and draped on it: the clip's velocity at that pose (the
+  // lead-in starts moving at once) is not the body's there (it stays `moving`: the colliders keep what a
+  // moving body needs, velocity maps or a refittable hierarchy, for the animation)
+  rig.frame.velocities.setZero();
+  const BodyFrame& exact = rig.source.exact(rig.frame, rig.exact_scratch);
+  r.body_triangles = exact.triangles.cols();
+  if (rig.source.has_proxy()) {
+    r.collision_triangles = rig.frame.triangles.cols();
+    r.proxy_deviation_mm = proxy_deviation_mm(rig.frame, exact);
+  }
+  return exact;
+}
+
+// every garment of the scene meshed and placed on the exact body (a jittered placement moved by its seed's offset)
 ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   if (scene.garments.empty()) throw InputError(located(scene.path, 0, "the scene has no [[garment]]"));
   ClothMesh cloth;
@@ -176,6 +134,26 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   return cloth;
 }
 
+std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
+  if (name == "sphere") {
+    if (!body.is_sphere()) throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
+    return std::make_unique<SphereCollider>(body.sphere_center(0), scene.body.radius, scene.collider_options);
+  }
+  return make_collider(name, scene.collider_options);
+}
+
+// the collider under test on the dressing pose (its set-up time in the result) and, with collider.dress_with,
+// the dressing one
+void set_up_colliders(const Scene& scene, Rig& rig, RunResult& r) {
+  rig.collider = make_scene_collider(scene, scene.collider, rig.source);
+  rig.collider->set_body(rig.frame);
+  r.setup_ms = rig.collider->stats().setup_ms;
+  if (!scene.dress_with.empty() && scene.dress_with != scene.collider) {
+    rig.dresser = make_scene_collider(scene, scene.dress_with, rig.source);
+    rig.dresser->set_body(rig.frame);
+  }
+}
+
 // a garment placed partly inside the body starts sewing from a tangle the push-out may not undo: say so, with how
 // much and how deep (as the collider that dresses it answers, one query of every cloth vertex)
 void warn_start_inside(const Scene& scene, const ClothMesh& cloth, Collider& collider) {
@@ -195,565 +173,70 @@ void warn_start_inside(const Scene& scene, const ClothMesh& cloth, Collider& col
                  std::string(collider.name()).c_str());
 }
 
-// an attached vertex bound far from the body holds the garment in mid-air (an attached edge that sewing did not
-// bring to the body): warn
-void warn_attached_far(const Scene& scene, const Simulator& sim) {
-  constexpr Real kFar = 0.01f;  // [m]: a waistband rests on the body within a few millimetres
-  const Points3& offsets = sim.attachment_offsets();
-  long far = 0;
-  Real farthest = 0;
-  for (Eigen::Index i = 0; i < offsets.cols(); ++i) {
-    const Real d = offsets.col(i).norm();
-    farthest = std::max(farthest, d);
-    far += d > kFar;
-  }
-  if (far)
-    std::fprintf(stderr,
-                 "clothbench: warning: %s: %ld of %ld attached vertices are bound more than %.0f mm from the body (the "
-                 "farthest %.1f mm): they hold the garment in mid-air (check the pattern's attached edge and that "
-                 "sewing brings it to the body)\n",
-                 scene.path.c_str(), far, long(offsets.cols()), 1e3 * double(kFar), 1e3 * double(farthest));
-}
-
-std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
-  if (name == "sphere") {
-    if (!body.is_sphere()) throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
-    return std::make_unique<SphereCollider>(body.sphere_center(0), scene.body.radius, scene.collider_options);
-  }
-  return make_collider(name, scene.collider_options);
-}
-
-// progress on stderr, at most once a second, only after the first second, with an ETA: the time
-// per iteration so far times the iterations left of the plan (an upper bound: phases end early
-// when sewn or settled)
-class Progress {
- public:
-  Progress(bool on, std::string label, const Simulator& sim)
-      : on_(on), label_(std::move(label)), sim_(sim), start_(sim.timings().iterations) {}
-  // from now on, at most `iterations` more; the ETA takes the rate from here (a phase's iterations can cost far
-  // more than the last one's: an object-space collider after an image-space dresser)
-  void plan(long iterations) {
-    start_ = sim_.timings().iterations;
-    end_ = start_ + iterations;
-    phase_.restart();
-  }
-  template <class... A>
-  void report(const char* format, A... args) {
-    if (!on_ || clock_.ms() < next_ms_) return;
-    next_ms_ = clock_.ms() + 1000;
-    std::fprintf(stderr, "  [%s %.0f s, ETA <= %s] ", label_.c_str(), clock_.ms() / 1e3, eta().c_str());
-    std::fprintf(stderr, format, args...);
-    std::fputc('\n', stderr);
-  }
-
- private:
-  std::string eta() const {
-    const long now = sim_.timings().iterations, done = now - start_;
-    if (done <= 0) return "?";
-    return format_duration(phase_.ms() / 1e3 / double(done) * double(std::max(0L, end_ - now)));
-  }
-  bool on_;
-  std::string label_;
-  const Simulator& sim_;
-  long start_, end_ = 0;
-  Stopwatch clock_, phase_;
-  double next_ms_ = 1000;
-};
-
-// the simulator's cumulative timings as a phase's share
-struct PhaseClock {
-  const Simulator& sim;
-  SimTimings start = sim.timings();
-  Stopwatch wall;
-  double cpu_start = thread_cpu_ms();
-  void finish(PhaseResult& r) const {
-    r.iterations = sim.timings().iterations - start.iterations;
-    r.cdr_ms = sim.timings().cdr_ms - start.cdr_ms;
-    r.cs_ms = sim.timings().cs_ms - start.cs_ms;
-    r.limit_ms = sim.timings().limit_ms - start.limit_ms;
-    r.wall_ms = wall.ms();
-    r.cpu_ms = thread_cpu_ms() - cpu_start;
-  }
-};
-
-long iteration_cap(const Scene& scene, double seconds, double dt) {
-  const long by_time = static_cast<long>(std::ceil(seconds / dt));
-  return scene.stop.max_iterations > 0 ? std::min(by_time, scene.stop.max_iterations) : by_time;
-}
-
-void sew(const Scene& scene, Simulator& sim, Progress& progress, bool trace, RunResult& run) {
-  PhaseResult& r = run.sew;
-  if (!scene.stop.sew || sim.mesh().seam_pairs.cols() == 0) return;
-  sim.set_phase(Phase::kSew);
-  PhaseClock clock{sim};
-  const long cap = iteration_cap(scene, scene.stop.sew_max_s, sim.dt());
-  const Real gap = scene.stop.sewn_gap_mm * 1e-3f;
-  for (long i = 0; i < cap && !r.reached; ++i) {
-    Stopwatch iteration;
-    const bool alive = sim.step();
-    if (trace) run.sew_iteration_ms.push_back(float(iteration.ms()));
-    if (!alive) break;
-    r.reached = sim.seam_gap_max() <= gap || sim.sewn_fraction() >= 1;
-    progress.report("sew: iteration %ld, seam gap %.1f mm", i + 1, 1e3 * double(sim.seam_gap_max()));
-  }
-  clock.finish(r);
-}
-
-Real rms_speed(const Simulator& sim) {
-  const double mass = sim.masses().sum();
-  return mass > 0 ? Real(std::sqrt(2 * sim.kinetic_energy() / mass)) : 0;
-}
-
-void drape(const Scene& scene, Simulator& sim, Progress& progress, PhaseResult& r) {
-  sim.set_phase(Phase::kDrape);
-  PhaseClock clock{sim};
-  const long cap = iteration_cap(scene, scene.stop.drape_max_s, sim.dt());
-  const long window = std::max(1L, static_cast<long>(std::ceil(scene.stop.settle_window_s / sim.dt())));
-  long calm = 0;
-  for (long i = 0; i < cap && !r.reached; ++i) {
-    if (!sim.step()) break;
-    calm = rms_speed(sim) < scene.stop.settle_speed ? calm + 1 : 0;
-    r.reached = calm >= window;
-    progress.report("drape: iteration %ld, RMS speed %.3f m/s", i + 1, double(rms_speed(sim)));
-  }
-  clock.finish(r);
-}
-
-// the animate phase's frames: `steps` iterations each, `lead_in` frames before the measured `frames`
-struct AnimationPlan {
-  long steps = 0, lead_in = 0, frames = 0;
-};
-
-AnimationPlan animation_plan(const Scene& scene, const BodySource& source, double dt) {
-  if (!source.moves()) return {};
-  const double frame_dt = 1.0 / scene.body.fps;
-  AnimationPlan p;
-  p.steps = std::max(1L, static_cast<long>(std::ceil(frame_dt / dt)));
-  p.lead_in = static_cast<long>(std::floor((source.start() - source.dress_time()) / frame_dt + 1e-9));
-  p.frames = static_cast<long>(std::floor((source.end() - source.start()) / frame_dt + 1e-9));
-  return p;
-}
-
-// the most iterations each phase may take; the animate phase's lead-in runs with the dressing collider
-struct Budget {
-  long sew = 0, drape = 0, animate = 0, lead_in = 0, frames = 0;
-  long total() const { return sew + drape + animate; }
-  long dressing() const { return sew + drape + lead_in; }
-};
-
-Budget iteration_budget(const Scene& scene, const BodySource& source, const Simulator& sim) {
-  Budget b;
-  if (scene.stop.sew && sim.mesh().seam_pairs.cols() > 0) b.sew = iteration_cap(scene, scene.stop.sew_max_s, sim.dt());
-  b.drape = iteration_cap(scene, scene.stop.drape_max_s, sim.dt());
-  const AnimationPlan a = animation_plan(scene, source, sim.dt());
-  b.frames = a.lead_in + a.frames;
-  b.animate = b.frames * a.steps;
-  b.lead_in = a.lead_in * a.steps;
-  return b;
-}
-
-// cloth simulation per iteration [ms]: a few iterations of a copy of the simulator without
-// collisions (the run never sees them)
-double cloth_ms_per_iteration(const Simulator& sim, Phase phase) {
-  Simulator copy = sim;
-  copy.set_collider(nullptr);
-  copy.set_phase(phase);
-  Stopwatch clock;
-  long n = 0;
-  bool alive = true;
-  do {
-    alive = copy.step();
-    ++n;
-  } while (alive && n < 3 && clock.ms() < 20);
-  return clock.ms() / double(n);
-}
-
-// collision detection per query point [ms]: batches of the cloth's points (spread over it) until
-// 50 ms or 256 points; colliders answer queries without keeping state (only their stats count them)
-double query_ms_per_point(const Points3& cloth, Collider& collider) {
-  const Eigen::Index count = std::min<Eigen::Index>(256, cloth.cols()),
-                     stride = cloth.cols() / std::max<Eigen::Index>(1, count);
-  Points3 sample(3, count);
-  for (Eigen::Index i = 0; i < count; ++i) sample.col(i) = cloth.col(i * stride);
-  std::vector<Contact> contacts(static_cast<std::size_t>(count));
-  Stopwatch clock;
-  Eigen::Index done = 0;
-  while (done < count && (done == 0 || clock.ms() < 50)) {
-    const Eigen::Index batch = std::min<Eigen::Index>(16, count - done);
-    collider.query(PointsView(sample.data() + 3 * done, static_cast<std::size_t>(batch)),
-                   {contacts.data() + done, static_cast<std::size_t>(batch)});
-    done += batch;
-  }
-  return done > 0 ? clock.ms() / double(done) : 0;
-}
-
-// the run's simulation time [s], extrapolated from a few measured iterations: cloth simulation and queries per
-// iteration (with the dressing collider up to the measured animation), plus one collider update per animation
-// frame as long as its set-up. Sewing and draping: their budget, a bound (they end once sewn and settled, the shipped
-// scenes at a tenth of it or less); the animation runs all its steps: a prediction
-struct Estimate {
-  double dressing_s = 0, animation_s = 0;
-};
-
-Estimate estimate_seconds(const Simulator& sim, Collider& dresser, Collider& collider, int query_points,
-                          const Budget& b, double update_ms) {
-  const double cloth_ms = cloth_ms_per_iteration(sim, b.sew > 0 ? Phase::kSew : Phase::kDrape);
-  const double dress_ms = query_ms_per_point(sim.positions(), dresser) * query_points;
-  const double measure_ms = &collider == &dresser || b.total() == b.dressing()
-                                ? dress_ms
-                                : query_ms_per_point(sim.positions(), collider) * query_points;
-  Estimate e;
-  e.dressing_s = (cloth_ms + dress_ms) * double(b.sew + b.drape) / 1e3;
-  e.animation_s = (cloth_ms * double(b.animate) + dress_ms * double(b.lead_in) +
-                   measure_ms * double(b.animate - b.lead_in) + update_ms * double(b.frames)) /
-                  1e3;
-  return e;
-}
-
-// the next body frame, evaluated and handed to the collider's prepare_body on a second thread while the cloth steps
-// through the current one (body.prepare_ahead): the body's motion is prescribed, so nothing of it waits on the cloth.
-// One thread for the whole animation (an OpenGL context moving to a new thread every frame costs, measured with
-// is-egl on an NVIDIA H100, more than the drawing)
-class FrameAhead {
- public:
-  explicit FrameAhead(const BodySource& source) : source_(source), worker_([this] { work(); }) {}
-  FrameAhead(const FrameAhead&) = delete;
-  FrameAhead& operator=(const FrameAhead&) = delete;
-  ~FrameAhead() {
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      quit_ = true;
-    }
-    changed_.notify_all();
-    worker_.join();
-  }
-
-  // the frame at `at`, its maps drawn by `collider`, under way on the worker
-  void start(Collider& collider, double at) {
-    wait();
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      collider_ = &collider;
-      t = at;
-      busy_ = true;
-    }
-    changed_.notify_all();
-  }
-  // until the frame under way is ready; rethrows what the worker threw
-  void wait() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [this] { return !busy_; });
-    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
-  }
-
-  BodyFrame frame;
-  double t = -1;           // animation time of `frame`; < 0: none under way
-  double skinning_ms = 0;  // its evaluation's time (on the worker)
-  bool prepared = false;   // the collider prepared its update (else update_body does the work, in turn)
-
- private:
-  void work() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    for (;;) {
-      changed_.wait(lock, [this] { return busy_ || quit_; });
-      if (quit_) return;
-      lock.unlock();
-      try {
-        Stopwatch skin;
-        source_.frame_into(frame, t);
-        skinning_ms = skin.ms();
-        prepared = collider_->prepare_body(frame);
-      } catch (...) {
-        error_ = std::current_exception();
-      }
-      lock.lock();
-      busy_ = false;
-      changed_.notify_all();
-    }
-  }
-
-  const BodySource& source_;
-  Collider* collider_ = nullptr;
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  bool busy_ = false, quit_ = false;
-  std::exception_ptr error_;
-  std::thread worker_;  // last: started once the members it reads exist
-};
-
-// the queries of a frame come from the cloth's box grown by what it can move in `frames` frames (image space then
-// draws only the map rows that spans)
-void set_region(Collider& collider, const Simulator& sim, Real region_margin, int frames) {
-  if (!(region_margin > 0)) return;
-  Box3 region = bounding_box(sim.positions());
-  region.min.array() -= Real(frames) * region_margin, region.max.array() += Real(frames) * region_margin;
-  collider.set_query_region(region);
-}
-
-// one body frame: evaluate (timed), update the collider, move attachments, then `steps` cloth steps spread over
-// the frame; with body.move_between_frames each step sees the body where it was at the step's time
-// (BodyBetweenFrames), else the frame's end pose throughout. With `ahead`, a frame at t prepared during the last
-// one is taken from it, and the frame at `t_next` (> 0) is prepared while this one's steps run (its map rows from
-// the cloth's box now, grown by two frames' margin)
-bool advance_frame(const BodySource& source, double t, double frame_dt, long steps, Simulator& sim,
-                   BodyBetweenFrames& collider, bool between, Real region_margin, BodyFrame& frame, double& skinning_ms,
-                   FrameAhead* ahead, double t_next) {
-  // a frame prepared ahead is always the next one asked for (else the collider would make stale maps current)
-  if (ahead && ahead->t >= 0 && ahead->t != t)
-    throw std::logic_error("advance_frame: the frame prepared ahead is not next");
-  if (ahead && ahead->t == t) {
-    std::swap(frame, ahead->frame);
-    ahead->t = -1;
-    skinning_ms += ahead->skinning_ms;
-    if (!ahead->prepared) set_region(collider, sim, region_margin, 1);
-  } else {
-    Stopwatch skin;
-    source.frame_into(frame, t);
-    skinning_ms += skin.ms();
-    set_region(collider, sim, region_margin, 1);
-  }
-  collider.update_body(frame);
-  if (ahead && t_next > 0) {
-    set_region(collider, sim, region_margin, 2);
-    ahead->start(collider, t_next);
-  }
-  const bool attached = !sim.mesh().attached.empty();
-  if (attached && !between) sim.follow_attachments(frame);
-  bool alive = true;
-  sim.set_collider(&collider);
-  for (long s = 0; s < steps && alive; ++s) {
-    const Real tau = between ? Real(frame_dt * double(steps - 1 - s) / double(steps)) : Real(0);
-    collider.set_time_before_pose(tau);
-    // attached vertices start the step where the body had them a step before tau, and the step's dt v brings
-    // them to tau (held once per frame, they would run a frame ahead of the body and jump back)
-    if (attached && between) sim.follow_attachments(frame, tau + sim.dt());
-    alive = sim.step();
-  }
-  if (ahead) ahead->wait();
-  return alive;
-}
-
-// "vertex 812 at (0.180, 1.250, -0.020) m, 13.6 mm inside at t = 2.10 s; the collider answered contact at
-// -2.1 mm": where and when a point is deepest, and what the collider under test said of it at its last step
-std::string describe_vertex(const Simulator& sim, int v, double depth_mm, double t) {
-  const auto p = sim.positions().col(v);
-  const auto& contacts = sim.contacts();
-  const bool hit = contacts.size() > static_cast<std::size_t>(v) && contacts[static_cast<std::size_t>(v)].hit;
-  char text[200];
-  std::snprintf(text, sizeof text, "vertex %d at (%.3f, %.3f, %.3f) m, %.1f mm inside at t = %.2f s; ", v, double(p(0)),
-                double(p(1)), double(p(2)), depth_mm, t);
-  std::string out = text;
-  if (!hit) return out + "the collider answered no contact";
-  std::snprintf(text, sizeof text, "the collider answered contact at %.1f mm",
-                1e3 * double(contacts[static_cast<std::size_t>(v)].depth));
-  return out + text;
-}
-
-// the oracle at one animation frame (its strain beside): a sample, and where the deepest vertex is when this frame
-// is the deepest yet
-void measure_frame(const BodyFrame& frame, const Simulator& sim, const StrainStats& strain, double t, RunResult& r) {
-  const Oracle oracle(frame);
-  Accuracy a = oracle.measure(sim.positions());
-  oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
-  if (a.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm))
-    r.depth_max_where = describe_vertex(sim, static_cast<int>(a.deepest), a.depth_max_mm, t);
-  r.frame_samples.push_back({t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});
-}
-
-// the lead-in (dress_at_s -> start_s, with the dressing collider, not measured), then the measured window
-void animate(const Scene& scene, const BodySource& source, Simulator& sim, Collider& collider, Collider& dresser,
-             BodyFrame& frame, Progress& progress, const RunOptions& options, RunResult& r) {
-  if (!source.moves()) return;
-  sim.set_phase(Phase::kAnimate);
-  const double frame_dt = 1.0 / scene.body.fps;
-  const auto [steps, lead_in, frames] = animation_plan(scene, source, sim.dt());
-  r.steps_per_frame = double(steps);
-  double unmeasured_ms = 0;
-  bool alive = true;
-  const Real tol = scene.collider_options.tol;
-  const bool between = scene.body.move_between_frames;
-  const Real skin = Real(scene.body.skin_mm * 1e-3);
-  const Real margin = Real(scene.collider_options.query_margin_mm * 1e-3);
-  BodyBetweenFrames dresser_between(dresser, tol, skin), collider_between(collider, tol, skin);
-  std::optional<FrameAhead> lead_ahead, ahead;
-  if (scene.body.prepare_ahead) lead_ahead.emplace(source), ahead.emplace(source);
-  FrameAhead* const lead_pipe = lead_ahead ? &*lead_ahead : nullptr;
-  FrameAhead* const pipe = ahead ? &*ahead : nullptr;
-  const auto lead_in_time = [&](long f) { return source.dress_time() + double(f) * frame_dt; };
-  const auto window_time = [&](long f) { return source.start() + double(f) * frame_dt; };
-  for (long f = 1; f <= lead_in && alive; ++f) {
-    alive = advance_frame(source, lead_in_time(f), frame_dt, steps, sim, dresser_between, between, margin, frame,
-                          unmeasured_ms, lead_pipe, f < lead_in ? lead_in_time(f + 1) : 0);
-    progress.report("animate (lead-in): frame %ld of %ld", f, lead_in);
-  }
-  collider.update_body(frame);
-  r.window_seam_gap_mm = 1e3 * double(sim.seam_gap_max());
-  progress.plan(frames * steps);  // the measured window's collider sets the pace from here
-  PhaseClock clock{sim};
-  const CollideStats before = collider.stats();
-  double not_animation_ms = 0, not_animation_cpu_ms = 0;
-  BodyFrame exact_scratch;  // the exact body of a frame, with a collision proxy
-  for (long f = 1; f <= frames && alive; ++f) {
-    const double t = window_time(f);
-    alive = advance_frame(source, t, frame_dt, steps, sim, collider_between, between, margin, frame, r.skinning_ms,
-                          pipe, f < frames ? window_time(f + 1) : 0);
-    r.prepared_frames += pipe && f < frames && pipe->prepared;
-    ++r.frames;
-    Stopwatch outside;  // the strain, the oracle and the caller's callback are not the animation's time
-    const double outside_cpu = thread_cpu_ms();
-    const StrainStats strain = sim.strain();
-    r.animate_strain_max = std::max(r.animate_strain_max, double(strain.max));
-    const bool measured = options.measure_frames && alive;
-    if (measured || options.on_frame) {  // the exact body only when something looks at it
-      const BodyFrame& exact = source.exact(frame, exact_scratch);
-      if (measured) measure_frame(exact, sim, strain, t, r);
-      if (options.on_frame) options.on_frame(f, t, exact, sim);
-    }
-    not_animation_ms += outside.ms();
-    not_animation_cpu_ms += thread_cpu_ms() - outside_cpu;
-    progress.report("animate: frame %ld of %ld (t = %.2f s)", f, frames, t);
-  }
-  sim.set_collider(&collider);  // the wrappers end here
-  r.animate.reached = alive && r.frames == frames;
-  const CollideStats after = collider.stats();
-  r.collider_update_ms = after.update_ms - before.update_ms;
-  r.collider_queries = after.queries - before.queries;
-  r.collider_query_ms = after.query_ms - before.query_ms;
-  clock.finish(r.animate);
-  r.animate.wall_ms -= not_animation_ms;
-  r.animate.cpu_ms -= not_animation_cpu_ms;
-}
-
-// "spring 40 (vertices 12-13), 1.32 m high, ends in contact 1/2, on a seam 0/2": where a spring is
-std::string describe_spring(const Simulator& sim, int s) {
-  if (s < 0) return "";
-  const ClothMesh& mesh = sim.mesh();
-  const int ends[2] = {mesh.springs(0, s), mesh.springs(1, s)};
-  int in_contact = 0, on_seam = 0;
-  for (int v : ends) {
-    in_contact += sim.contacts().size() > static_cast<std::size_t>(v) && sim.contacts()[static_cast<std::size_t>(v)].hit;
-    on_seam += (mesh.seam_pairs.array() == v).any();
-  }
-  const double y = 0.5 * double(sim.positions()(1, ends[0]) + sim.positions()(1, ends[1]));
-  char text[160];
-  std::snprintf(text, sizeof text, "spring %d (vertices %d-%d), %.2f m high, ends in contact %d/2, on a seam %d/2", s,
-                ends[0], ends[1], y, in_contact, on_seam);
-  return text;
-}
-
-// the widest open seam pair: its vertices, their panels and the gap ("" when every pair is within 0.01 mm)
-std::string describe_seam_gap(const Simulator& sim) {
-  const ClothMesh& mesh = sim.mesh();
-  const int widest = sim.widest_seam_pair();
-  if (widest < 0) return "";
-  const int a = mesh.seam_pairs(0, widest), b = mesh.seam_pairs(1, widest);
-  const Real gap = (sim.positions().col(a) - sim.positions().col(b)).norm();
-  if (!(gap > 1e-5f)) return "";
-  const auto panel = [&](int v) { return mesh.panel_names[static_cast<std::size_t>(mesh.panel[static_cast<std::size_t>(v)])]; };
-  char text[200];
-  std::snprintf(text, sizeof text, "seam pair %d (vertices %d-%d, panels %s and %s), %.2f mm apart", widest, a, b,
-                panel(a).c_str(), panel(b).c_str(), 1e3 * double(gap));
-  return text;
-}
-
-// accuracy of the end state against the exact body (vertices, and quad midpoints with face queries;
-// crossings of the structural springs; penetrating faces)
-void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
-  Oracle oracle(r.final_body);
-  Points3 points = sim.positions();
-  if (scene.solver.face_queries && sim.quad_midpoints().cols() > 0) {
-    Points3 all(3, points.cols() + sim.quad_midpoints().cols());
-    all << points, sim.quad_midpoints();
-    points = std::move(all);
-  }
-  r.accuracy = oracle.measure(points);
-  oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), r.accuracy);
-  oracle.measure_faces(sim.positions(), sim.mesh().quads, r.accuracy);
-  r.seam_gap_max_mm = 1e3 * double(sim.seam_gap_max());
-  r.seam_gap_where = describe_seam_gap(sim);
-  const StrainStats strain = sim.strain();
-  r.strain_max = strain.max;
-  r.strain_p99 = strain.p99;
-  r.strain_over = strain.over;
-  r.strain_max_where = describe_spring(sim, strain.max_spring);
-  r.kinetic_energy = sim.kinetic_energy();
-}
-
-}  // namespace
-
-namespace {
-
-// "estimate: the animation about 1 min 05 s (60 frames, 6660 steps); sewing and draping at most about 2 min 25 s
-// (brute, 1234 queries/iteration, up to 7000 iterations; ...)" on stderr
-void print_estimate(const std::string& label, const Scene& scene, const RunResult& r, const Budget& b,
-                    const Estimate& e) {
-  std::string animation;
-  if (b.animate > 0)
-    animation = "the animation about " + format_duration(e.animation_s) + " (" + std::to_string(b.frames) +
-                " frames, " + std::to_string(b.animate) + " steps); ";
-  std::fprintf(stderr,
-               "  [%s] estimate: %ssewing and draping at most about %s (%s, %d queries/iteration, up to %ld "
-               "iterations; they end once sewn and settled, often far sooner)\n",
-               label.c_str(), animation.c_str(), format_duration(e.dressing_s).c_str(), scene.collider.c_str(),
-               r.query_points, b.sew + b.drape);
-}
-
-RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
-  RunResult r;
-  r.scene = scene.name;
-  r.collider = scene.collider;
-  r.integrator = scene.solver.integrator;
-  r.regime = to_string(scene.solver.regime);
-  r.config_hash = config_hash(scene);
-  r.strain_threshold = scene.solver.limit == "none" ? 0 : double(scene.solver.threshold);
-  // body, cloth, collider, simulator
-  const BodySource source(scene);
-  BodyFrame frame;
-  source.frame_into(frame, source.dress_time());
-  // the body stands still while the garment is sewn and draped on it: the clip's velocity at that pose (the
-  // lead-in starts moving at once) is not the body's there (it stays `moving`: the colliders keep what a
-  // moving body needs, velocity maps or a refittable hierarchy, for the animation)
-  frame.velocities.setZero();
-  BodyFrame exact_scratch;
-  const BodyFrame& exact = source.exact(frame, exact_scratch);
-  r.body_triangles = exact.triangles.cols();
-  if (source.has_proxy()) {
-    r.collision_triangles = frame.triangles.cols();
-    r.proxy_deviation_mm = proxy_deviation_mm(frame, exact);
-  }
-  ClothMesh cloth = build_cloth(scene, exact);
-  std::unique_ptr<Collider> collider = make_scene_collider(scene, scene.collider, source);
-  collider->set_body(frame);
-  r.setup_ms = collider->stats().setup_ms;
-  std::unique_ptr<Collider> dresser;
-  if (!scene.dress_with.empty() && scene.dress_with != scene.collider) {
-    dresser = make_scene_collider(scene, scene.dress_with, source);
-    dresser->set_body(frame);
-  }
-  warn_start_inside(scene, cloth, dresser ? *dresser : *collider);
-  std::optional<Simulator> sim;
+// the simulator of the cloth, dressing with the dressing collider (its sizes and steps in the result)
+void set_up_simulator(const Scene& scene, ClothMesh cloth, Rig& rig, RunResult& r) {
   try {
-    sim.emplace(std::move(cloth), scene.material, scene.solver);
+    rig.sim.emplace(std::move(cloth), scene.material, scene.solver);
   } catch (const std::invalid_argument& e) {
     throw InputError(located(scene.path, 0, e.what()));
   }
+  const Simulator& sim = *rig.sim;
   // the body is answered body.skin_mm thicker while dressing too (the animation wraps its colliders the same way)
-  BodyBetweenFrames dressing(dresser ? *dresser : *collider, scene.collider_options.tol,
-                             Real(scene.body.skin_mm * 1e-3));
-  sim->set_collider(&dressing);
-  r.vertices = sim->mesh().vertex_count();
-  r.query_points = r.vertices + (scene.solver.face_queries ? static_cast<int>(sim->mesh().quads.cols()) : 0);
-  r.dt_s = sim->dt();
-  r.dt_bound_s = sim->stable_dt();
-  r.dt_spectral_s = sim->spectral_dt();
-  r.k_structural = sim->stiffness(SpringKind::kStructural);
+  rig.dressing.emplace(rig.dressing_collider(), scene.collider_options.tol, Real(scene.body.skin_mm * 1e-3));
+  rig.sim->set_collider(&*rig.dressing);
+  r.vertices = sim.mesh().vertex_count();
+  r.query_points = r.vertices + (scene.solver.face_queries ? static_cast<int>(sim.mesh().quads.cols()) : 0);
+  r.dt_s = sim.dt();
+  r.dt_bound_s = sim.stable_dt();
+  r.dt_spectral_s = sim.spectral_dt();
+  r.k_structural = sim.stiffness(SpringKind::kStructural);
+}
+
+// sew -> attach -> drape -> animate, the ETA planned over what is left; a diverged simulation stops there
+void run_phases(const RunContext& run, const Budget& budget, RunResult& r) {
+  run.progress.plan(budget.total());
+  sew(run, r);
+  attach(run);
+  run.progress.plan(budget.drape + budget.animate);
+  if (!run.sim.divergence()) drape(run, r);
+  run.progress.plan(budget.animate);
+  if (!run.sim.divergence()) animate(run, r);
+  r.divergence = run.sim.divergence();
+}
+
+// after the phases: the collider's threads and share of searches (counted from `before`), whether the run
+// converged, and the end state measured against the exact body
+void finish(const RunContext& run, BodyFrame& exact_scratch, const CollideStats& before, RunResult& r) {
+  const Scene& scene = run.scene;
+  const Simulator& sim = run.sim;
+  const CollideStats stats = run.collider.stats();
+  r.threads = r.prepared_frames > 0 ? std::max(stats.threads, 2) : stats.threads;
+  r.device = run.collider.device();
+  const std::int64_t points = stats.points - before.points, searches = stats.searches - before.searches;
+  r.search_share = points > 0 ? double(searches) / double(points) : 0;
+  r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim.mesh().seam_pairs.cols() == 0) &&
+                (r.drape.reached || scene.stop.drape_max_s == 0) && (!run.source.moves() || r.animate.reached);
+  r.final_body = run.source.exact(run.frame, exact_scratch);
+  if (!r.divergence) measure(scene, sim, r);
+  r.mesh = sim.mesh();
+  r.mesh.positions = sim.positions();
+}
+
+RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
+  RunResult r = configuration(scene);
+  // body, cloth, collider, simulator
+  Rig rig(scene);
+  ClothMesh cloth = build_cloth(scene, pose_body(rig, r));
+  set_up_colliders(scene, rig, r);
+  warn_start_inside(scene, cloth, rig.dressing_collider());
+  set_up_simulator(scene, std::move(cloth), rig, r);
   // up front: how long it may take
   const std::string label = options.label.empty() ? scene.name + "/" + scene.collider : options.label;
-  const Budget budget = iteration_budget(scene, source, *sim);
+  const Budget budget = iteration_budget(scene, rig.source, *rig.sim);
   r.iteration_budget = budget.total();
   Estimate estimate;
   if (options.progress || options.estimate_only) {
-    estimate = estimate_seconds(*sim, dresser ? *dresser : *collider, *collider, r.query_points, budget, r.setup_ms);
+    estimate = estimate_seconds(*rig.sim, rig.dressing_collider(), *rig.collider, r.query_points, budget, r.setup_ms);
     r.estimate_s = estimate.dressing_s + estimate.animation_s;
   }
   // up front where the run may be long: the animation's prediction, or the dressing's bound ten times over (a bound
@@ -764,56 +247,22 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
     print_estimate(label, scene, r, budget, estimate);
   if (options.estimate_only) return r;
   // the estimate's timing queries are not the run's: its share of searches counts from here
-  const CollideStats before = collider->stats();
-  // sew -> drape -> animate
-  Progress progress(options.progress, label, *sim);
-  progress.plan(budget.total());
-  sew(scene, *sim, progress, options.trace, r);
-  // attachments (Durupinar 3.2) bind where sewing left the waistband, before gravity comes on
-  if (!sim->mesh().attached.empty()) {
-    sim->attach(frame);
-    warn_attached_far(scene, *sim);
-  }
-  progress.plan(budget.drape + budget.animate);
-  if (!sim->divergence()) drape(scene, *sim, progress, r.drape);
-  progress.plan(budget.animate);
-  if (!sim->divergence())
-    animate(scene, source, *sim, *collider, dresser ? *dresser : *collider, frame, progress, options, r);
-  r.divergence = sim->divergence();
-  const CollideStats stats = collider->stats();
-  r.threads = r.prepared_frames > 0 ? std::max(stats.threads, 2) : stats.threads;
-  r.device = collider->device();
-  const std::int64_t points = stats.points - before.points, searches = stats.searches - before.searches;
-  r.search_share = points > 0 ? double(searches) / double(points) : 0;
-  r.converged = !r.divergence && (r.sew.reached || !scene.stop.sew || sim->mesh().seam_pairs.cols() == 0) &&
-                (r.drape.reached || scene.stop.drape_max_s == 0) && (!source.moves() || r.animate.reached);
-  r.final_body = source.exact(frame, exact_scratch);
-  if (!r.divergence) measure(scene, *sim, r);
-  r.mesh = sim->mesh();
-  r.mesh.positions = sim->positions();
+  const CollideStats before = rig.collider->stats();
+  Progress progress(options.progress, label, *rig.sim);
+  const RunContext run{scene, options, rig.source, rig.frame, *rig.collider, rig.dressing_collider(), *rig.sim,
+                       progress};
+  run_phases(run, budget, r);
+  finish(run, rig.exact_scratch, before, r);
   return r;
 }
 
 }  // namespace
 
-std::string format_duration(double seconds) {
-  if (!std::isfinite(seconds)) return "?";
-  if (seconds < 0.95) return "under 1 s";
-  const long s = std::lround(seconds);
-  char buf[48];
-  if (s < 60) {
-    std::snprintf(buf, sizeof buf, "%ld s", s);
-  } else if (s < 3600) {
-    std::snprintf(buf, sizeof buf, "%ld min %ld s", s / 60, s % 60);
-  } else {
-    std::snprintf(buf, sizeof buf, "%ld h %02ld min", s / 3600, s / 60 % 60);
-  }
-  return buf;
-}
+}  // namespace runner_detail
 
 RunResult run_scene(const Scene& scene, const RunOptions& options) {
   try {
-    return run_unchecked(scene, options);
+    return runner_detail::run_unchecked(scene, options);
   } catch (const InputError& e) {
     // every input error of a run names the scene first, then what it referred to
     const std::string what = e.what();
