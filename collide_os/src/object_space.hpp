@@ -1,6 +1,6 @@
 #pragma once
-// internal: what every object-space collider shares: the contract's answer from a closest-point
-// search, and the checks of set_body / update_body
+// internal: the helpers behind ObjectSpaceCollider (object_space_collider.hpp) and EmbreeDistance:
+// the contract's answer from a closest-point search, temporal coherence, the checks of update_body
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -11,7 +11,6 @@
 
 #include "clothbench/sim/collider.hpp"
 #include "clothbench/sim/mesh_query.hpp"
-#include "clothbench/sim/timer.hpp"
 
 namespace clothbench::detail {
 
@@ -122,27 +121,6 @@ Contact answer_point(const BodyFrame& body, const PseudoNormals& pseudo, const B
   return c;
 }
 
-/// The query loop of the one-threaded object-space colliders: NaN points, and every point before
-/// a body is set, are degenerate misses; `answer(i, p)` answers the rest; counts and time go to
-/// `stats`.
-template <class Answer>
-void answer_points(PointsView points, ContactsOut out, bool has_body, CollideStats& stats, const Answer& answer) {
-  Stopwatch sw;
-  for (std::size_t i = 0; i < points.count; ++i) {
-    const Vec3 p = points[i];
-    if (!has_body || !p.allFinite()) {
-      out[i] = Contact{};
-      ++stats.degenerate;
-      continue;
-    }
-    out[i] = answer(i, p);
-    stats.hits += out[i].hit;
-  }
-  stats.points += static_cast<std::int64_t>(points.count);
-  ++stats.queries;
-  stats.query_ms += sw.ms();
-}
-
 /// Throws std::invalid_argument naming `what` when `body` cannot replace `current` in
 /// update_body: no body set yet, a different topology, or a malformed frame.
 inline void check_update(const BodyFrame& current, bool has_body, const BodyFrame& body, const std::string& what) {
@@ -153,16 +131,6 @@ inline void check_update(const BodyFrame& current, bool has_body, const BodyFram
     throw std::invalid_argument(what + ": update_body needs the topology of set_body (" +
                                 std::to_string(current.vertex_count()) + " vertices, " +
                                 std::to_string(current.triangle_count()) + " triangles)");
-}
-
-/// Takes a checked frame's motion (positions, normals, velocities, time) into `current`; the
-/// triangles are the same by check_update.
-inline void adopt_frame(BodyFrame& current, const BodyFrame& body) {
-  current.positions = body.positions;
-  current.normals = body.normals;
-  current.velocities = body.velocities;
-  current.time_s = body.time_s;
-  current.moving = body.moving;
 }
 
 }  // namespace clothbench::detail

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -24,12 +25,12 @@ using test::run;
 TEST(BbtreeCollider, NearAConvexBodyItAgreesWithBrute) {
   const BodyFrame sphere = make_sphere_body(Vec3(0, 1, 0), 0.2f, 48, 96);
   const Real tol = ColliderOptions{}.tol;
-  BbtreeCollider tree(ColliderOptions{});
+  const std::unique_ptr<Collider> tree = make_bbtree_collider(ColliderOptions{});
   BruteForceCollider brute;
-  tree.set_body(sphere);
+  tree->set_body(sphere);
   brute.set_body(sphere);
   const Points3 points = test::surface_points(sphere, 4000, 3, 1.0, tol);
-  const auto got = run(tree, points), ref = run(brute, points);
+  const auto got = run(*tree, points), ref = run(brute, points);
   int differ = 0, compared = 0;
   for (std::size_t i = 0; i < got.size(); ++i) {
     differ += got[i].hit != ref[i].hit;
@@ -40,19 +41,19 @@ TEST(BbtreeCollider, NearAConvexBodyItAgreesWithBrute) {
   }
   EXPECT_LT(differ, int(got.size()) / 100) << differ << " of " << got.size() << " differ";
   EXPECT_GT(compared, int(got.size()) / 2);
-  EXPECT_EQ(tree.stats().searches, std::int64_t(points.cols()));
+  EXPECT_EQ(tree->stats().searches, std::int64_t(points.cols()));
 }
 
 // a point deeper than tol behind every face lies in no face's box grown by tol: the method does
 // not see it (the paper's "holes"), where brute does
 TEST(BbtreeCollider, DeepInsideIsItsBlindSpot) {
   const BodyFrame sphere = make_sphere_body(Vec3::Zero(), 0.2f, 24, 48);
-  BbtreeCollider tree(ColliderOptions{});
-  tree.set_body(sphere);
+  const std::unique_ptr<Collider> tree = make_bbtree_collider(ColliderOptions{});
+  tree->set_body(sphere);
   Points3 p(3, 2);
-  p.col(0) = Vec3(0, 0, 0.19f);  // 1 cm deep
+  p.col(0) = Vec3(0, 0, 0.19f);   // 1 cm deep
   p.col(1) = Vec3(0, 0, 0.198f);  // 2 mm deep: seen
-  const auto got = run(tree, p);
+  const auto got = run(*tree, p);
   EXPECT_FALSE(got[0].hit);
   ASSERT_TRUE(got[1].hit);
   EXPECT_NEAR(got[1].depth, -0.002f, 5e-4f);
@@ -70,12 +71,13 @@ TEST(BbtreeCollider, RefitEqualsRebuildAndVelocitiesFollow) {
   }
   moved.normals = angle_weighted_normals(moved.positions, moved.triangles);
   moved.moving = true;
-  BbtreeCollider refit(ColliderOptions{}), rebuilt(ColliderOptions{});
-  refit.set_body(base);
-  refit.update_body(moved);
-  rebuilt.set_body(moved);
+  const std::unique_ptr<Collider> refit = make_bbtree_collider(ColliderOptions{}),
+                                  rebuilt = make_bbtree_collider(ColliderOptions{});
+  refit->set_body(base);
+  refit->update_body(moved);
+  rebuilt->set_body(moved);
   const Points3 points = test::surface_points(moved, 3000, 9, 1.0, 0.01f);
-  const auto a = run(refit, points), b = run(rebuilt, points);
+  const auto a = run(*refit, points), b = run(*rebuilt, points);
   int hits = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
     ASSERT_EQ(a[i].hit, b[i].hit) << "point " << i;
@@ -85,23 +87,23 @@ TEST(BbtreeCollider, RefitEqualsRebuildAndVelocitiesFollow) {
     EXPECT_LT((a[i].body_velocity - velocity).norm(), 1e-5f) << "point " << i;
   }
   EXPECT_GT(hits, 100);
-  EXPECT_EQ(refit.stats().updates, 1);
+  EXPECT_EQ(refit->stats().updates, 1);
 }
 
 TEST(BbtreeCollider, BadInputGivesClearErrorsAndNaNPointsAreDegenerate) {
-  BbtreeCollider tree(ColliderOptions{});
+  const std::unique_ptr<Collider> tree = make_bbtree_collider(ColliderOptions{});
   const BodyFrame sphere = make_sphere_body(Vec3::Zero(), 0.1f, 6, 12);
-  EXPECT_THROW(tree.update_body(sphere), std::invalid_argument);  // before set_body
-  EXPECT_THROW(tree.set_body(BodyFrame{}), std::invalid_argument);
+  EXPECT_THROW(tree->update_body(sphere), std::invalid_argument);  // before set_body
+  EXPECT_THROW(tree->set_body(BodyFrame{}), std::invalid_argument);
   BodyFrame broken = sphere;
   broken.positions(1, 3) = std::numeric_limits<Real>::quiet_NaN();
-  EXPECT_THROW(tree.set_body(broken), std::invalid_argument);
+  EXPECT_THROW(tree->set_body(broken), std::invalid_argument);
   Points3 p(3, 1);
   p.col(0) = Vec3::Constant(std::numeric_limits<Real>::quiet_NaN());
-  EXPECT_FALSE(run(tree, p)[0].hit);  // no body yet
-  tree.set_body(sphere);
-  EXPECT_FALSE(run(tree, p)[0].hit);
-  EXPECT_EQ(tree.stats().degenerate, 2);
+  EXPECT_FALSE(run(*tree, p)[0].hit);  // no body yet
+  tree->set_body(sphere);
+  EXPECT_FALSE(run(*tree, p)[0].hit);
+  EXPECT_EQ(tree->stats().degenerate, 2);
 }
 
 }  // namespace

@@ -15,31 +15,12 @@
 
 namespace clothbench {
 
-/// The bounding-box-tree collider. Non-copyable (pimpl).
-class BbtreeCollider final : public Collider {
- public:
-  /// Uses options.tol [m]; queries run on one thread.
-  explicit BbtreeCollider(const ColliderOptions& options);
-  ~BbtreeCollider() override;
-
-  std::string_view name() const override { return "bbtree"; }
-  /// Builds the tree (stats().setup_ms). Throws std::invalid_argument for an empty body,
-  /// non-finite vertices or an out-of-range index.
-  void set_body(const BodyFrame& body) override;
-  /// Refits every box and face normal to new positions (same topology); stats().update_ms.
-  void update_body(const BodyFrame& body) override;
-  /// One Contact per point as above: hit when a face is found with depth < tol; otherwise
-  /// hit = false, depth = tol (a lower bound only where the method sees). NaN points: hit = false,
-  /// counted in stats().degenerate; every other point is one tree search (stats().searches).
-  void query(PointsView points, ContactsOut out) override;
-  CollideStats stats() const override;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
-
-/// Factory used by the registry (name "bbtree").
+/// The bounding-box-tree collider, name "bbtree" (used by the registry): an ObjectSpaceCollider
+/// (object_space_collider.hpp) whose set_body builds the tree (stats().setup_ms) and whose
+/// update_body refits every box and face normal (stats().update_ms). Uses options.tol [m]; queries
+/// run on one thread. One Contact per point as above: hit when a face is found with depth < tol;
+/// otherwise hit = false, depth = tol (a lower bound only where the method sees). Every finite
+/// point is one tree search (stats().searches).
 std::unique_ptr<Collider> make_bbtree_collider(const ColliderOptions& options);
 
 }  // namespace clothbench

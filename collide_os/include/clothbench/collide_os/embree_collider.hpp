@@ -9,38 +9,13 @@
 
 namespace clothbench {
 
-/// The Embree collider. Non-copyable; Embree handles stay inside the .cpp files (pimpl).
-class EmbreeCollider final : public Collider {
- public:
-  /// Uses options.tol [m], options.search_radius [m], options.coherent and options.threads (Embree build threads
-  /// and query worker threads; recorded in stats().threads).
-  explicit EmbreeCollider(const ColliderOptions& options);
-  ~EmbreeCollider() override;
-
-  std::string_view name() const override { return "embree"; }
-  /// Builds the BVH, HIGH quality for a static body, refittable for a moving one (timed in
-  /// stats().setup_ms). Throws std::invalid_argument for an empty body,
-  /// non-finite vertices or an out-of-range index; std::runtime_error for an Embree error.
-  void set_body(const BodyFrame& body) override;
-  /// Refits the BVH to new positions (same topology; a static build is rebuilt refittable the
-  /// first time); timed in stats().update_ms.
-  void update_body(const BodyFrame& body) override;
-  /// One Contact per point: hit when inside or closer than tol, with the exact answer; a miss's
-  /// depth is a lower bound >= tol. With options.coherent (default) each point of an array queried
-  /// before keeps a bound: one that cannot have come within tol since (its own motion plus the
-  /// body's) is a miss without a search, the others search within the distance to their last
-  /// closest triangle. Without it, every point searches within search_radius, and points inside
-  /// the body's box with nothing there get an unbounded search. NaN points: hit = false, counted
-  /// in stats().degenerate; searches run are counted in stats().searches.
-  void query(PointsView points, ContactsOut out) override;
-  CollideStats stats() const override;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
-
-/// Factory used by the registry (name "embree").
+/// The Embree collider, name "embree" (used by the registry): an ObjectSpaceCollider with its exact
+/// answers (object_space_collider.hpp). set_body builds the BVH, HIGH quality for a static body,
+/// refittable for a moving one (stats().setup_ms); update_body refits it (a static build is
+/// rebuilt refittable the first time; stats().update_ms). Uses options.tol [m],
+/// options.search_radius [m], options.coherent, options.face_normals and options.threads (Embree
+/// build threads and query worker threads, at least 256 points each; recorded in
+/// stats().threads). Throws std::runtime_error for an Embree error (no device, a failed build).
 std::unique_ptr<Collider> make_embree_collider(const ColliderOptions& options);
 
 }  // namespace clothbench
