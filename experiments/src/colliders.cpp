@@ -267,7 +267,7 @@ std::string renderer_table(ExperimentContext& ctx) {
   return out.str();
 }
 
-void colliders(ExperimentContext& ctx) {
+void colliders_page(ExperimentContext& ctx) {
   const std::vector<Variant> list = variants(ctx);
   std::ostringstream body;
   body << "Every collider's own costs and accuracy, and what the object-space baselines gain from temporal "
@@ -287,7 +287,7 @@ void colliders(ExperimentContext& ctx) {
 }  // namespace
 
 void add_colliders_experiments(std::vector<Experiment>& out) {
-  out.push_back({"colliders", "Colliders: costs and accuracy, coherence", colliders});
+  out.push_back({"colliders", "Colliders: costs and accuracy, coherence", colliders_page});
 }
 
 }  // namespace clothbench
