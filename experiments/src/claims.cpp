@@ -144,10 +144,11 @@ bool detection_accurate(const nlohmann::json& row) {
 
 // the stable-regime object-space row of dressing-t1 for GARMENT with the lowest CD&R time, among
 // those within the detection's accuracy limits when any is; empty when there is none
-std::string fastest_object_space(std::map<std::string, nlohmann::json>& rows, const std::string& garment, bool& meets) {
+std::string fastest_object_space(const ExperimentContext& ctx, std::map<std::string, nlohmann::json>& rows,
+                                 const std::string& garment, bool& meets) {
   std::string best;
   meets = false;
-  for (const char* os : {"fcl", "embree", "vdb", "bbtree"}) {
+  for (const std::string& os : ctx.colliders(in_tables(Family::kObjectSpace))) {
     const std::string name = "dressing-t1/" + garment + "/" + os;
     if (!rows.count(name)) continue;
     const bool ok = detection_accurate(rows[name]);
@@ -166,9 +167,9 @@ Claim speed_claim(ExperimentContext& ctx) {
   double lo = 1e300, hi = 0;
   for (const char* g : {"shirt", "dress"}) {
     bool meets = false;
-    const std::string os = fastest_object_space(rows, g, meets);
+    const std::string os = fastest_object_space(ctx, rows, g, meets);
     if (os.empty()) continue;
-    for (const char* is : {"is-gl", "is-cpu"}) {
+    for (const std::string& is : ctx.colliders(in_tables(Family::kImageSpace))) {
       const std::string a = std::string("dressing-t1/") + g + "/" + is;
       if (!rows.count(a)) continue;
       const double f = rows[os]["cdr_ms"].get<double>() / rows[a]["cdr_ms"].get<double>();
@@ -281,10 +282,13 @@ Claim faces_claim(ExperimentContext& ctx, const BodyFrame& body) {
   // medians, its range from the extremes
   constexpr int kSamples = 9;
   std::map<std::string, std::vector<std::vector<double>>> cost;  // collider -> level -> samples [µs]
+  // is-cpu against every object-space collider of the tables, the lead one first
+  const std::vector<std::string> os = lead_first(kLeadObjectSpace, ctx.colliders(in_tables(Family::kObjectSpace)));
+  std::vector<std::string> measured = ctx.colliders({"is-cpu"});
+  measured.insert(measured.end(), os.begin(), os.end());
   for (int level = 0; level < 3; ++level) {
     if (level) b = subdivide_body(b);
-    for (const auto& col : ctx.colliders({"is-cpu", "embree", "fcl", "vdb", "bbtree"}))
-      cost[col].push_back(query_us(col, b, points, kSamples));
+    for (const auto& col : measured) cost[col].push_back(query_us(col, b, points, kSamples));
     c.numbers += std::to_string(b.triangles.cols()) + " triangles: ";
     for (const auto& [col, v] : cost) c.numbers += col + " " + num(median(v.back()), 3) + " µs; ";
   }
@@ -307,11 +311,14 @@ Claim faces_claim(ExperimentContext& ctx, const BodyFrame& body) {
   constexpr double kFlat = 1.5;  // the most growth that still counts as not depending on the faces
   const Growth is = growth("is-cpu");
   const bool clear = is.high < kFlat || is.low >= kFlat;
+  std::string against;  // "G (embree), G (fcl) and G (vdb)"
+  for (std::size_t i = 0; i < os.size(); ++i)
+    against += std::string(i == 0 ? "" : i + 1 == os.size() ? " and " : ", ") + show(os[i]) + " (" + os[i] + ")";
   c.numbers += "growth over 16x the faces, median of " + std::to_string(kSamples) + " measurements (range)";
   c.verdict = std::string(is.median < kFlat ? "holds" : "fails") +
               (clear ? "" : " on the medians (the range crosses " + num(kFlat, 1) + "x)") + ": per-point cost grows " +
-              show("is-cpu") + " for is-cpu against " + show("embree") + " (embree), " + show("fcl") + " (fcl), " +
-              show("vdb") + " (vdb) and " + show("bbtree") + " (bbtree) at 16x the faces";
+              show("is-cpu") + " for is-cpu against " + (against.empty() ? "no object-space collider" : against) +
+              " at 16x the faces";
   return c;
 }
 
@@ -598,8 +605,9 @@ Claim box_tree_claim(ExperimentContext& ctx) {
   if (rows.empty() || !rows.begin()->second.contains("meets_limits")) return c;
   compare_smallest(c, rows, "bbtree", "is-cpu+papers-test+faces", "bbtree", "is-cpu (the papers' test) with faces");
   c.verdict = "against the box tree (the paper's object-space method): " + c.verdict;
-  // the exact object-space colliders too: fewer vertices than the box tree may be the box tree's holes alone
-  for (const char* os : {"fcl", "embree", "vdb"}) {
+  // the other object-space colliders too: fewer vertices than the box tree may be the box tree's holes alone
+  for (const std::string& os : ctx.colliders(in_tables(Family::kObjectSpace))) {
+    if (os == "bbtree") continue;  // the box tree, compared above
     Claim against = c;
     compare_smallest(against, rows, os, "is-cpu+papers-test+faces", os, "");
     if (against.verdict.rfind("untestable", 0) == 0) continue;

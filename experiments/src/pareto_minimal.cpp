@@ -37,6 +37,7 @@ std::vector<std::string> sets_for(const ExperimentContext& ctx, int vertices, st
 
 struct Point {
   std::string label;  // collider and options
+  bool image_space = false;
   int vertices = 0;
   double seconds = 0, inside = 0, p95 = 0, crossings = 0;  // crossings: % of structural springs
   double drape_rms = 0, drape_max = 0;  // drape error against the garment's reference [mm]
@@ -76,7 +77,9 @@ struct Reference {
   ClothMesh mesh;
 };
 Reference reference_drape(ExperimentContext& ctx, const Garment& g) {
-  const std::string exact = ctx.colliders({"embree", "fcl", "brute"}).front();  // brute is always built
+  // brute, the reference, is exact and always built
+  const std::string exact =
+      lead_first(kLeadObjectSpace, ctx.colliders([](const ColliderInfo& c) { return c.exact; })).front();
   const int n = ctx.quick() ? g.sizes.back() : 2 * g.sizes.back();
   const RunResult& r = ctx.run(g.scene, exact, sets_for(ctx, n, {}));
   ctx.add_run(r, std::string("pareto/") + g.name + "/reference " + exact + "/" + std::to_string(n));
@@ -102,10 +105,12 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g, cons
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (const char* views : {"4", "6"})
       configs.push_back({is, is + " 320 px " + std::string(views) + " views", {std::string("collider.views=") + views}});
-  for (const auto& is : ctx.colliders({"is-gl"})) configs.push_back({is, is + " 320 px", {}});
-  for (const auto& os : ctx.colliders({"embree"})) configs.push_back({os, os, {}});
-  for (const auto& os : ctx.colliders({"fcl"})) configs.push_back({os, os, {}});
-  for (const auto& os : ctx.colliders({"bbtree"})) configs.push_back({os, os, {}});
+  // the other image-space colliders of the tables (is-cpu's sizes are swept above) at the default size; every
+  // object-space one, the lead first, and vdb's voxel size swept after them (the field's resolution is its accuracy)
+  for (const auto& is : ctx.colliders(in_tables(Family::kImageSpace)))
+    if (is != "is-cpu") configs.push_back({is, is + " 320 px", {}});
+  for (const auto& os : lead_first(kLeadObjectSpace, ctx.colliders(in_tables(Family::kObjectSpace))))
+    if (os != "vdb") configs.push_back({os, os, {}});
   for (const auto& os : ctx.colliders({"vdb"}))
     for (const char* voxel : {"0.004", "0.002"})
       configs.push_back({os, os + " voxel " + std::string(voxel), {std::string("collider.voxel_size=") + voxel}});
@@ -119,6 +124,7 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g, cons
       const RunResult& r = ctx.run(g.scene, c.collider, sets_for(ctx, n, c.sets));
       Point p;
       p.label = c.label;
+      p.image_space = collider_info(c.collider)->family == Family::kImageSpace;
       p.vertices = r.vertices;
       p.seconds = r.total_s();
       p.inside = r.accuracy.inside_pct;
@@ -175,7 +181,7 @@ std::string front_summary(const char* garment, const std::vector<Point>& pts) {
   for (const Point& p : pts) {
     if (!p.front) continue;
     ++front;
-    image += p.label.rfind("is-", 0) == 0 ? 1 : 0;
+    image += p.image_space ? 1 : 0;
     if (!fastest || p.seconds < fastest->seconds) fastest = &p;
   }
   return std::string(garment) + ": " + std::to_string(front) + " of " + std::to_string(pts.size()) +
@@ -279,7 +285,8 @@ void minimal(ExperimentContext& ctx) {
     setups.push_back({c, false}), setups.push_back({c, true}), setups.push_back({c, false, 6}),
         setups.push_back({c, false, 2, true}),
         setups.push_back({c, true, 2, true});  // the papers' configuration for their Table 2 counts
-  for (const auto& c : ctx.colliders({"embree", "fcl", "vdb", "bbtree"})) setups.push_back({c, false});
+  for (const auto& c : lead_first(kLeadObjectSpace, ctx.colliders(in_tables(Family::kObjectSpace))))
+    setups.push_back({c, false});
   const auto sets = [&](const Setup& s, int n) {
     std::vector<std::string> extra{s.faces ? "solver.face_queries=true" : "solver.face_queries=false",
                                    "collider.views=" + std::to_string(s.views)};

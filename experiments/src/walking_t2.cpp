@@ -93,15 +93,21 @@ struct WalkVariant {
   bool speed = false;  // a row of the speed paragraph's frontier (taken from the dress with is-cpu)
 };
 
-// stable and papers' regimes with every collider on walk_07_01, stable on walk_08_02 with image space and the
-// fastest exact collider, then the ablations (is-cpu) and the travelling body (is-cpu and embree)
-std::vector<WalkVariant> walk_variants() {
-  const std::vector<std::string> all{"is-gl", "is-egl", "is-cpu", "fcl", "embree", "bbtree"},
-      some{"is-gl", "is-egl", "is-cpu", "embree"};
+// stable and papers' regimes with every collider of the speed tables on walk_07_01, stable on walk_08_02 with image
+// space and the lead object-space collider, then the ablations (is-cpu) and the travelling body (is-cpu and embree)
+std::vector<WalkVariant> walk_variants(const ExperimentContext& ctx) {
+  const std::vector<std::string> all =
+      ctx.colliders([](const ColliderInfo& c) { return in_speed_tables(c) && !c.slow_update; });
+  // a collider whose update to the moved body takes seconds (vdb voxelises the skinned body again every frame):
+  // half a second of walking only
+  const std::vector<std::string> slow =
+      ctx.colliders([](const ColliderInfo& c) { return in_speed_tables(c) && c.slow_update; });
+  const std::vector<std::string> some = ctx.colliders([](const ColliderInfo& c) {
+    return in_speed_tables(c) && (c.family == Family::kImageSpace || c.name == kLeadObjectSpace);
+  });
   std::vector<WalkVariant> v;
   v.push_back({"stable", "walk_07_01", "stable", "", {}, all, true});
-  // vdb voxelises the skinned body again every frame (seconds each): half a second of walking only
-  v.push_back({"stable, 0.5 s", "walk_07_01", "stable", "/0.5s", {"body.end_s=1.5"}, {"vdb"}});
+  v.push_back({"stable, 0.5 s", "walk_07_01", "stable", "/0.5s", {"body.end_s=1.5"}, slow});
   v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some, true});
   // the papers' clock with walking Eq. 5's averaging limit (with the directional one, Eq. 6, the dress diverges
   // there), the regime's 32 passes stopping at 0.05 mm
@@ -140,7 +146,7 @@ std::vector<WalkVariant> walk_variants() {
                "stable",
                "/allrows",
                {"collider.query_margin_mm=0"},
-               {"is-gl", "is-cpu"}});
+               ctx.colliders(in_tables(Family::kImageSpace))});
   // the next frame skinned and its maps drawn on a second thread while the cloth steps (the same run: timing rows)
   v.push_back({"stable, next frame prepared ahead (2 threads)",
                "walk_07_01",
@@ -440,7 +446,7 @@ void walking_t2(ExperimentContext& ctx) {
     const double fps = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
     std::vector<std::pair<std::string, RunResult>> charted;
     meeting.push_back({g.product, {0, 0}});
-    for (const WalkVariant& variant : walk_variants())
+    for (const WalkVariant& variant : walk_variants(ctx))
       for (const auto& c : ctx.colliders(variant.colliders)) {
         // --quick: the code paths once (the second clip and the travelling body add none)
         if (ctx.quick() && (variant.clip != "walk_07_01" || variant.row_suffix == "/travel")) continue;
