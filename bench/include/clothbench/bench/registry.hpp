@@ -31,8 +31,8 @@ struct ColliderInfo {
   std::string name;         ///< "is-gl", "is-cpu", "fcl", "embree", "brute", ...
   std::string description;  ///< one line
   Family family = Family::kObjectSpace;
-  /// Answers the closest point of the body's triangles to float rounding (fcl, embree, brute); false for maps,
-  /// fields and tests that skip faces by design.
+  /// Answers the closest point of the body's triangles to float rounding (fcl, embree, brute); false for maps, a
+  /// sampled field (vdb) and a test that skips faces by design (bbtree's vertex-face test).
   bool exact = false;
   /// Listed by every results table that lists its family; false for one named only where a table wants it:
   /// the reference (brute), or another collider's answers from another device (is-egl: is-gl's maps in EGL).
