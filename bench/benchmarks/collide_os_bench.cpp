@@ -120,9 +120,9 @@ void bm_oracle(benchmark::State& state) {
 }
 
 void register_all() {
-  for (const std::string& name : available_colliders()) {
-    if (name != "fcl" && name != "embree" && name != "vdb" && name != "bbtree" && name != "brute") continue;
-    const bool brute = name == "brute";
+  for (const std::string& name :
+       colliders([](const ColliderInfo& c) { return c.family != Family::kImageSpace; })) {  // object space, reference
+    const bool brute = collider_info(name)->family == Family::kReference;
     benchmark::RegisterBenchmark(("build/" + name).c_str(), bm_build, name)->Unit(benchmark::kMillisecond);
     if (!brute) benchmark::RegisterBenchmark(("refit/" + name).c_str(), bm_refit, name)->Unit(benchmark::kMillisecond);
     // brute: 100 points only (O(points x triangles))

@@ -61,9 +61,7 @@ std::string since_previous(ExperimentContext& ctx, const std::vector<std::pair<s
 std::string opengl_devices() {
   std::string list;
   bool gpu = false;
-  const auto built = available_colliders();
-  for (const std::string name : {"is-gl", "is-egl"}) {
-    if (std::find(built.begin(), built.end(), name) == built.end()) continue;
+  for (const std::string& name : colliders([](const ColliderInfo& c) { return c.needs != Needs::kNothing; })) {
     try {
       const std::string device = make_collider(name)->device();
       gpu = gpu || !cpu_device(device);

@@ -9,6 +9,7 @@
 #include <map>
 #include <random>
 
+#include "claims.hpp"
 #include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/timing_stats.hpp"
@@ -23,13 +24,8 @@
 
 namespace clothbench {
 
-namespace {
+namespace claim_rows {
 
-struct Claim {
-  std::string source, claim, experiment, numbers, verdict;
-};
-
-// rows of OUT/ID.json by name; empty when the experiment has not been run into OUT
 std::map<std::string, nlohmann::json> rows_of(ExperimentContext& ctx, const std::string& id) {
   std::map<std::string, nlohmann::json> rows;
   std::ifstream in(ctx.path(id + ".json"));
@@ -45,7 +41,13 @@ std::map<std::string, nlohmann::json> rows_of(ExperimentContext& ctx, const std:
   return rows;
 }
 
-const std::string kNotRun = "not measured: run `clothbench reproduce` (all experiments) first";
+}  // namespace claim_rows
+
+namespace {
+
+using claim_rows::Claim;
+using claim_rows::kNotRun;
+using claim_rows::rows_of;
 
 // the garments the claims sew at jittered placements (the shirt only in --quick)
 std::vector<std::pair<std::string, int>> placement_garments(const ExperimentContext& ctx) {
@@ -144,10 +146,11 @@ bool detection_accurate(const nlohmann::json& row) {
 
 // the stable-regime object-space row of dressing-t1 for GARMENT with the lowest CD&R time, among
 // those within the detection's accuracy limits when any is; empty when there is none
-std::string fastest_object_space(std::map<std::string, nlohmann::json>& rows, const std::string& garment, bool& meets) {
+std::string fastest_object_space(const ExperimentContext& ctx, std::map<std::string, nlohmann::json>& rows,
+                                 const std::string& garment, bool& meets) {
   std::string best;
   meets = false;
-  for (const char* os : {"fcl", "embree", "vdb", "bbtree"}) {
+  for (const std::string& os : ctx.colliders(in_tables(Family::kObjectSpace))) {
     const std::string name = "dressing-t1/" + garment + "/" + os;
     if (!rows.count(name)) continue;
     const bool ok = detection_accurate(rows[name]);
@@ -166,9 +169,9 @@ Claim speed_claim(ExperimentContext& ctx) {
   double lo = 1e300, hi = 0;
   for (const char* g : {"shirt", "dress"}) {
     bool meets = false;
-    const std::string os = fastest_object_space(rows, g, meets);
+    const std::string os = fastest_object_space(ctx, rows, g, meets);
     if (os.empty()) continue;
-    for (const char* is : {"is-gl", "is-cpu"}) {
+    for (const std::string& is : ctx.colliders(in_tables(Family::kImageSpace))) {
       const std::string a = std::string("dressing-t1/") + g + "/" + is;
       if (!rows.count(a)) continue;
       const double f = rows[os]["cdr_ms"].get<double>() / rows[a]["cdr_ms"].get<double>();
@@ -281,10 +284,13 @@ Claim faces_claim(ExperimentContext& ctx, const BodyFrame& body) {
   // medians, its range from the extremes
   constexpr int kSamples = 9;
   std::map<std::string, std::vector<std::vector<double>>> cost;  // collider -> level -> samples [µs]
+  // is-cpu against every object-space collider of the tables, the lead one first
+  const std::vector<std::string> os = lead_first(kLeadObjectSpace, ctx.colliders(in_tables(Family::kObjectSpace)));
+  std::vector<std::string> measured = ctx.colliders({"is-cpu"});
+  measured.insert(measured.end(), os.begin(), os.end());
   for (int level = 0; level < 3; ++level) {
     if (level) b = subdivide_body(b);
-    for (const auto& col : ctx.colliders({"is-cpu", "embree", "fcl", "vdb", "bbtree"}))
-      cost[col].push_back(query_us(col, b, points, kSamples));
+    for (const auto& col : measured) cost[col].push_back(query_us(col, b, points, kSamples));
     c.numbers += std::to_string(b.triangles.cols()) + " triangles: ";
     for (const auto& [col, v] : cost) c.numbers += col + " " + num(median(v.back()), 3) + " µs; ";
   }
@@ -307,11 +313,14 @@ Claim faces_claim(ExperimentContext& ctx, const BodyFrame& body) {
   constexpr double kFlat = 1.5;  // the most growth that still counts as not depending on the faces
   const Growth is = growth("is-cpu");
   const bool clear = is.high < kFlat || is.low >= kFlat;
+  std::string against;  // "G (embree), G (fcl) and G (vdb)"
+  for (std::size_t i = 0; i < os.size(); ++i)
+    against += std::string(i == 0 ? "" : i + 1 == os.size() ? " and " : ", ") + show(os[i]) + " (" + os[i] + ")";
   c.numbers += "growth over 16x the faces, median of " + std::to_string(kSamples) + " measurements (range)";
   c.verdict = std::string(is.median < kFlat ? "holds" : "fails") +
               (clear ? "" : " on the medians (the range crosses " + num(kFlat, 1) + "x)") + ": per-point cost grows " +
-              show("is-cpu") + " for is-cpu against " + show("embree") + " (embree), " + show("fcl") + " (fcl), " +
-              show("vdb") + " (vdb) and " + show("bbtree") + " (bbtree) at 16x the faces";
+              show("is-cpu") + " for is-cpu against " + (against.empty() ? "no object-space collider" : against) +
+              " at 16x the faces";
   return c;
 }
 
@@ -541,111 +550,6 @@ Claim reaction_claim(ExperimentContext& ctx) {
   return c;
 }
 
-// minimal's rows per garment (minimal/GARMENT/SETUP/N): the smallest vertex count of SETUP
-// meeting the limits, -1 when none of its ladder did
-std::map<std::string, std::map<std::string, long>> smallest_meeting(std::map<std::string, nlohmann::json>& rows) {
-  std::map<std::string, std::map<std::string, long>> smallest;
-  for (const auto& [name, r] : rows) {
-    const auto a = name.find('/'), b = name.find('/', a + 1), e = name.rfind('/');
-    long& slot = smallest[name.substr(a + 1, b - a - 1)].try_emplace(name.substr(b + 1, e - b - 1), -1).first->second;
-    const long n = r["vertices"].get<long>();
-    if (r.value("meets_limits", 0) == 1 && (slot < 0 || n < slot)) slot = n;
-  }
-  return smallest;
-}
-
-// per garment, whether setup `b` needs fewer vertices than `a` to meet the limits ("none" counts as
-// more than any); the claim's numbers and verdict from the count
-void compare_smallest(Claim& c, std::map<std::string, nlohmann::json>& rows, const std::string& a,
-                      const std::string& b, const std::string& a_name, const std::string& b_name) {
-  int fewer = 0, not_fewer = 0;
-  for (auto& [garment, setups] : smallest_meeting(rows)) {
-    if (!setups.count(a) || !setups.count(b)) continue;
-    const long na = setups[a], nb = setups[b];
-    const auto show = [](long n) { return n < 0 ? std::string("none") : std::to_string(n); };
-    c.numbers += garment + ": " + show(na) + " " + a_name + ", " + show(nb) + " " + b_name + "; ";
-    (nb >= 0 && (na < 0 || nb < na) ? fewer : not_fewer) += 1;
-  }
-  c.verdict = fewer + not_fewer == 0 ? "untestable: no size met the limits"
-              : not_fewer == 0       ? "holds for every garment"
-              : fewer == 0           ? "fails for every garment"
-                                     : "holds for " + std::to_string(fewer) + " of " + std::to_string(fewer + not_fewer) +
-                                 " garments";
-}
-
-Claim face_queries_claim(ExperimentContext& ctx) {
-  Claim c{"dressing Table 2, section 6", "face-body queries lower the minimum vertex count", "[minimal](minimal.md)",
-          "", kNotRun};
-  auto rows = rows_of(ctx, "minimal");
-  if (rows.empty() || !rows.begin()->second.contains("meets_limits")) return c;
-  // the verdict with the papers' test; ours beside it
-  Claim ours = c;
-  compare_smallest(ours, rows, "is-cpu", "is-cpu+faces", "without", "with");
-  compare_smallest(c, rows, "is-cpu+papers-test", "is-cpu+papers-test+faces", "without", "with");
-  c.experiment += " (the papers' test: z comparison on 8-bit maps)";
-  c.numbers += "ours (tangent plane, float maps): " + ours.numbers + ours.verdict + " with ours";
-  return c;
-}
-
-// dressing §7: the shirt and dress sizes of Table 1 were "the minimum necessary to produce visually
-// pleasing results for the bounding boxes approach"; with face queries image space needed fewer
-Claim box_tree_claim(ExperimentContext& ctx) {
-  Claim c{"dressing section 7, Tables 1-2",
-          "image space (with face queries) needs fewer vertices than the "
-          "bounding-box approach, which leaves holes",
-          "[minimal](minimal.md)", "", kNotRun};
-  auto rows = rows_of(ctx, "minimal");
-  if (rows.empty() || !rows.begin()->second.contains("meets_limits")) return c;
-  compare_smallest(c, rows, "bbtree", "is-cpu+papers-test+faces", "bbtree", "is-cpu (the papers' test) with faces");
-  c.verdict = "against the box tree (the paper's object-space method): " + c.verdict;
-  // the exact object-space colliders too: fewer vertices than the box tree may be the box tree's holes alone
-  for (const char* os : {"fcl", "embree", "vdb"}) {
-    Claim against = c;
-    compare_smallest(against, rows, os, "is-cpu+papers-test+faces", os, "");
-    if (against.verdict.rfind("untestable", 0) == 0) continue;
-    for (auto& [garment, setups] : smallest_meeting(rows))
-      if (setups.count(os))
-        c.numbers +=
-            garment + ": " + (setups[os] < 0 ? std::string("none") : std::to_string(setups[os])) + " " + os + "; ";
-    c.verdict += std::string("; against ") + os + " (exact, vertex queries only): " + against.verdict;
-  }
-  c.numbers += "paper: shirt 1800 OS, 544 IS; dress 3840 OS, 1024 IS";
-  return c;
-}
-
-// beyond the papers: image space with the cube of six views against the fastest exact object-space
-// collider at the same sizes (pareto): crossings, and collision cost per iteration
-Claim views_claim(ExperimentContext& ctx) {
-  Claim c{"ours (beyond the papers)", "image space with 6 views matches object space's crossings at a lower cost",
-          "[pareto](pareto.md)", "", kNotRun};
-  auto rows = rows_of(ctx, "pareto");
-  int matched = 0, compared = 0;
-  double lo = 1e300, hi = 0;
-  for (const auto& [name, r] : rows) {
-    const auto views = name.find("/is-cpu 320 px 6 views/");
-    if (views == std::string::npos || !r.contains("crossings_pct")) continue;
-    const std::string size = name.substr(name.rfind('/') + 1);  // pareto/GARMENT/CONFIGURATION/SIZE
-    const std::string os = name.substr(0, views) + "/embree/" + size;
-    if (!rows.count(os) || !rows[os].contains("crossings_pct")) continue;
-    const double cx = r["crossings_pct"].get<double>(), ox = rows[os]["crossings_pct"].get<double>();
-    const double ratio = rows[os]["cdr_ms"].get<double>() / r["cdr_ms"].get<double>();
-    ++compared;
-    matched += cx <= ox + 0.1;  // within a tenth of a point of embree's
-    lo = std::min(lo, ratio), hi = std::max(hi, ratio);
-    c.numbers += r.value("scene", "?") + " " + size + " v: " + num(cx, 2) + " % vs " + num(ox, 2) + " %; ";
-  }
-  if (compared == 0) return c;
-  c.numbers += "CD&R per iteration, embree / 6-view image space: " + num(lo, 1) + "-" + num(hi, 1) + "x";
-  const std::string cost = lo > 1 ? "at " + num(lo, 1) + "-" + num(hi, 1) + "x lower cost"
-                                  : "but not always cheaper (embree / image space " + num(lo, 1) + "-" + num(hi, 1) + "x)";
-  c.verdict = matched == compared && lo > 1
-                  ? "holds: crossings within 0.1 points of embree's in all " + std::to_string(compared) +
-                        " configurations, " + cost
-                  : "holds in " + std::to_string(matched) + " of " + std::to_string(compared) +
-                        " configurations (crossings within 0.1 points of embree's), " + cost;
-  return c;
-}
-
 // the page's opening lines: how many claims, how their verdicts fall, which fail
 std::vector<std::string> summary(const std::vector<Claim>& list) {
   // a verdict's kind: the first of these words in it
@@ -680,9 +584,9 @@ void claims(ExperimentContext& ctx) {
                           directional_claim(ctx),
                           reaction_claim(ctx),
                           speed_claim(ctx)};
-  list.push_back(face_queries_claim(ctx));
-  list.push_back(box_tree_claim(ctx));
-  list.push_back(views_claim(ctx));
+  list.push_back(claim_rows::face_queries_claim(ctx));
+  list.push_back(claim_rows::box_tree_claim(ctx));
+  list.push_back(claim_rows::views_claim(ctx));
   MarkdownTable t({"source", "claim", "tested by", "our numbers", "verdict"});
   for (const auto& c : list) t.row({c.source, c.claim, c.experiment, c.numbers, c.verdict});
   ctx.write("claims", "The papers' claims against our measurements",

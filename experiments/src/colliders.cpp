@@ -60,10 +60,14 @@ struct Variant {
   bool coherent;
 };
 
+// every collider of the speed tables; those that carry each point's bound between queries (ColliderInfo::coherent)
+// last, the lead one first, each once from scratch and once coherent
 std::vector<Variant> variants(ExperimentContext& ctx) {
   std::vector<Variant> out;
-  for (const auto& c : ctx.colliders({"is-gl", "is-egl", "is-cpu", "vdb", "bbtree"})) out.push_back({c, c, true});
-  for (const auto& c : ctx.colliders({"embree", "fcl"})) {
+  for (const auto& c : ctx.colliders([](const ColliderInfo& c) { return in_speed_tables(c) && !c.coherent; }))
+    out.push_back({c, c, true});
+  const auto coherent = ctx.colliders([](const ColliderInfo& c) { return in_speed_tables(c) && c.coherent; });
+  for (const auto& c : lead_first(kLeadObjectSpace, coherent)) {
     out.push_back({c, c + " (from scratch)", false});
     out.push_back({c, c, true});
   }
@@ -205,7 +209,8 @@ std::string renderer_table(ExperimentContext& ctx) {
   const int walk = model.animation_index("walk_07_01");
   const BodyFrame a = model.frame(walk, 1.0, true), b = model.frame(walk, 1.0 + 1.0 / 30, true);
   const int frames = ctx.quick() ? 2 : 20;
-  const std::vector<std::string> renderers = ctx.colliders({"is-gl", "is-egl", "is-cpu"});
+  const std::vector<std::string> renderers =
+      ctx.colliders([](const ColliderInfo& c) { return in_speed_tables(c) && c.family == Family::kImageSpace; });
   struct Setting {
     int size, views, layers;
     bool floats;
@@ -267,7 +272,7 @@ std::string renderer_table(ExperimentContext& ctx) {
   return out.str();
 }
 
-void colliders(ExperimentContext& ctx) {
+void colliders_page(ExperimentContext& ctx) {
   const std::vector<Variant> list = variants(ctx);
   std::ostringstream body;
   body << "Every collider's own costs and accuracy, and what the object-space baselines gain from temporal "
@@ -287,7 +292,7 @@ void colliders(ExperimentContext& ctx) {
 }  // namespace
 
 void add_colliders_experiments(std::vector<Experiment>& out) {
-  out.push_back({"colliders", "Colliders: costs and accuracy, coherence", colliders});
+  out.push_back({"colliders", "Colliders: costs and accuracy, coherence", colliders_page});
 }
 
 }  // namespace clothbench

@@ -44,7 +44,7 @@ void dressing_f8(ExperimentContext& ctx) {
   nlohmann::json series = nlohmann::json::array();
   std::string shirt_fits;  // the shirt's exponents per collider, for the summary
   for (const char* garment : {"shirt", "dress"})
-    for (const auto& c : ctx.colliders(kAll)) {
+    for (const auto& c : ctx.colliders(in_tables())) {
       std::vector<double> x, y;
       for (int n : sizes) {
         std::vector<std::string> sets{"garment.vertices=" + std::to_string(n), "stop.sew=false", "stop.settle_speed=0",

@@ -53,7 +53,7 @@ void dressing_t1(ExperimentContext& ctx) {
   std::string gltf;
   for (const auto& g : kT1) {
     for (const std::string regime : kRegimes)
-      for (const Variant& v : with_ours(ctx.colliders(kAll))) {
+      for (const Variant& v : t1_variants(ctx)) {
         const std::string& c = v.collider;
         const RunResult& r = t1_run(ctx, g, v, regime);
         const auto& p = paper::kDressingT1[(g.product == std::string("shirt") ? 0 : 2) + (image_space(c) ? 0 : 1)];
@@ -74,8 +74,8 @@ void dressing_t1(ExperimentContext& ctx) {
       }
     const auto& wp = paper::kWalkingT1[g.product == std::string("shirt") ? 0 : 2];
     const auto& wo = paper::kWalkingT1[g.product == std::string("shirt") ? 1 : 3];
-    for (const auto& is : ctx.colliders({"is-gl", "is-cpu"}))
-      for (const auto& os : ctx.colliders({"fcl", "embree", "vdb", "bbtree"})) {
+    for (const auto& is : ctx.colliders(in_tables(Family::kImageSpace)))
+      for (const auto& os : ctx.colliders(in_tables(Family::kObjectSpace))) {
         const double a = t1_run(ctx, g, {is}).cdr_ms_per_iteration(), b = t1_run(ctx, g, {os}).cdr_ms_per_iteration();
         rt.row({g.product, is, os, num(a / b, 4), num(b / a, 0) + "x", num(wp.cdr_ms / wo.cdr_ms, 2)});
       }
@@ -102,7 +102,7 @@ void dressing_t1(ExperimentContext& ctx) {
 }  // namespace
 
 void add_dressing_t1_experiments(std::vector<Experiment>& out) {
-  out.push_back({"dressing-t1", "Dressing paper Table 1", dressing_t1});
+  out.push_back({"dressing-t1", "Dressing paper Table 1", dressing_t1, t1_runs});
 }
 
 }  // namespace clothbench

@@ -43,7 +43,8 @@ Scene scene_for(const std::string& scene, const std::string& collider, const std
 bool ExperimentContext::needs_opengl(const std::string& collider) {
   // a forked worker inherits this process's OSMesa state but not llvmpipe's rendering threads: once this process
   // has drawn (a picture, an is-gl map), OpenGL in the child waits forever for threads that are not there
-  return collider == "is-gl" || collider == "is-egl";
+  const std::optional<ColliderInfo> c = collider_info(collider);
+  return c && c->needs != Needs::kNothing;
 }
 
 void ExperimentContext::prefetch(const std::vector<Request>& requests) {
@@ -145,6 +146,18 @@ std::vector<std::string> ExperimentContext::colliders(const std::vector<std::str
     }
   }
   return out;
+}
+
+std::vector<std::string> ExperimentContext::colliders(const ColliderFilter& keep) const {
+  for (const ColliderInfo& c : all_colliders())
+    if (!c.built && keep(c)) std::cerr << "  note: collider " << c.name << " is not built; its rows are left out\n";
+  return clothbench::colliders(keep);
+}
+
+std::vector<std::string> lead_first(const std::string& lead, std::vector<std::string> names) {
+  const auto it = std::find(names.begin(), names.end(), lead);
+  if (it != names.end()) std::rotate(names.begin(), it, it + 1);
+  return names;
 }
 
 PictureRenderer& ExperimentContext::pictures() {

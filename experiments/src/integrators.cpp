@@ -202,6 +202,7 @@ void integrators(ExperimentContext& ctx) {
   nlohmann::json series = nlohmann::json::array();
   std::vector<Quickest> quickest(garments.size());
   for (const Solver& s : solvers)
+    // one collider of each family, the lead ones: the solvers are compared, not the colliders
     for (const std::string& collider : ctx.colliders({"is-cpu", "embree"})) {
       std::vector<double> x, y;
       for (std::size_t gi = 0; gi < garments.size(); ++gi) {

@@ -234,7 +234,7 @@ void limiters(ExperimentContext& ctx) {
        join(join(papers_main, {{"stable", "directional", 1}, {"stable", "directional", 8}}), walking_after)},
       {{"skirt", "walking/skirt.toml", 672, "walk_08_02"}, second_clip},
       {{"dress with sleeves", "walking/dress_sleeves.toml", 2300, "walk_08_02"}, second_clip}};
-  const std::string collider = ctx.colliders({"is-cpu"}).front();
+  const std::string collider = ctx.colliders({"is-cpu"}).front();  // the limiters are compared, on one collider
   MarkdownTable t({"garment", "body", "regime", "limiter", "passes", "vertices", "strain max / p99 [%]",
                    "springs over the strain limit [%] (end)", "inside [%] / depth [mm] / crossings [%]",
                    "limiter ms/step", "limiter share of the step [%]", "ms/step (CD&R + CS)",

@@ -3,6 +3,7 @@
 // colliders they compare, --quick budgets, accuracy cells, the Table 1 garments and budget, image space with
 // the papers' test or ours (Variant), pictures of the is-cpu runs and the line naming their renderer.
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "clothbench/bench/report.hpp"
@@ -12,9 +13,11 @@
 
 namespace clothbench::paper_tables {
 
-inline const std::vector<std::string> kAll{"is-gl", "is-cpu", "fcl", "embree", "vdb", "bbtree"};
-
-inline bool image_space(const std::string& collider) { return collider.rfind("is-", 0) == 0; }
+// whether a collider is of the image-space family (ColliderInfo::family)
+inline bool image_space(const std::string& collider) {
+  const std::optional<ColliderInfo> c = collider_info(collider);
+  return c && c->family == Family::kImageSpace;
+}
 
 // overrides every run of an experiment gets in --quick mode: same code paths, fewer iterations
 inline std::vector<std::string> with_quick(const ExperimentContext& ctx, std::vector<std::string> sets,
@@ -87,22 +90,42 @@ struct Variant {
   }
 };
 
-inline const RunResult& t1_run(ExperimentContext& ctx, const T1Garment& g, const Variant& v,
-                               const std::string& regime = "stable") {
+// what one Table 1 run asks for: a garment, an entry, a regime
+inline ExperimentContext::Request t1_request(const ExperimentContext& ctx, const T1Garment& g, const Variant& v,
+                                             const std::string& regime = "stable") {
   std::vector<std::string> sets = t1_budget(regime);
   sets.push_back("garment.vertices=" + std::to_string(g.vertices));
   sets.push_back("solver.regime=" + regime);
-  return ctx.run(g.scene, v.collider, with_quick(ctx, v.with(sets)));
+  return {g.scene, v.collider, with_quick(ctx, v.with(sets))};
+}
+
+inline const RunResult& t1_run(ExperimentContext& ctx, const T1Garment& g, const Variant& v,
+                               const std::string& regime = "stable") {
+  const ExperimentContext::Request q = t1_request(ctx, g, v, regime);
+  return ctx.run(q.scene, q.collider, q.sets);
 }
 
 // every collider, and once more with our defaults ("ours") those whose default departs from the papers' (image
-// space; embree, the object-space collider the verdicts lean on, for its normals)
+// space; the object-space collider the verdicts lean on, kLeadObjectSpace, for its normals)
 inline std::vector<Variant> with_ours(const std::vector<std::string>& colliders) {
   std::vector<Variant> v;
   for (const auto& c : colliders) v.push_back({c, false});
   for (const auto& c : colliders)
-    if (image_space(c) || c == "embree") v.push_back({c, true});
+    if (image_space(c) || c == kLeadObjectSpace) v.push_back({c, true});
   return v;
+}
+
+// Table 1's entries (dressing-t1, walking-t1): every collider of the tables, then ours where it departs
+inline std::vector<Variant> t1_variants(const ExperimentContext& ctx) { return with_ours(ctx.colliders(in_tables())); }
+
+// the runs of dressing-t1 and walking-t1, in their tables' order: per garment, regime and entry (their summaries
+// and dressing-t1's ratios take theirs from these)
+inline std::vector<ExperimentContext::Request> t1_runs(const ExperimentContext& ctx) {
+  std::vector<ExperimentContext::Request> runs;
+  for (const auto& g : kT1)
+    for (const std::string regime : kRegimes)
+      for (const Variant& v : t1_variants(ctx)) runs.push_back(t1_request(ctx, g, v, regime));
+  return runs;
 }
 
 inline const std::string kImageSpaceNote =
@@ -147,13 +170,15 @@ inline std::string summary_run(const RunResult& r) {
   return sew + ", " + verdict;
 }
 
-// the colliders a summary sets against each other: the first image-space and the first object-space one built
+// the colliders a summary sets against each other: the lead image-space and object-space ones, else the first built
+// of each family in the tables
 struct SummaryPair {
   std::string is, os;
   bool ok() const { return !is.empty() && !os.empty(); }
 };
 inline SummaryPair summary_pair(const ExperimentContext& ctx) {
-  const auto is = ctx.colliders({"is-cpu", "is-gl"}), os = ctx.colliders({"embree", "fcl", "vdb", "bbtree"});
+  const auto is = lead_first(kLeadImageSpace, ctx.colliders(in_tables(Family::kImageSpace)));
+  const auto os = lead_first(kLeadObjectSpace, ctx.colliders(in_tables(Family::kObjectSpace)));
   return {is.empty() ? "" : is.front(), os.empty() ? "" : os.front()};
 }
 

@@ -37,6 +37,7 @@ std::vector<std::string> sets_for(const ExperimentContext& ctx, int vertices, st
 
 struct Point {
   std::string label;  // collider and options
+  bool image_space = false;
   int vertices = 0;
   double seconds = 0, inside = 0, p95 = 0, crossings = 0;  // crossings: % of structural springs
   double drape_rms = 0, drape_max = 0;  // drape error against the garment's reference [mm]
@@ -76,7 +77,9 @@ struct Reference {
   ClothMesh mesh;
 };
 Reference reference_drape(ExperimentContext& ctx, const Garment& g) {
-  const std::string exact = ctx.colliders({"embree", "fcl", "brute"}).front();  // brute is always built
+  // brute, the reference, is exact and always built
+  const std::string exact =
+      lead_first(kLeadObjectSpace, ctx.colliders([](const ColliderInfo& c) { return c.exact; })).front();
   const int n = ctx.quick() ? g.sizes.back() : 2 * g.sizes.back();
   const RunResult& r = ctx.run(g.scene, exact, sets_for(ctx, n, {}));
   ctx.add_run(r, std::string("pareto/") + g.name + "/reference " + exact + "/" + std::to_string(n));
@@ -102,10 +105,12 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g, cons
   for (const auto& is : ctx.colliders({"is-cpu"}))
     for (const char* views : {"4", "6"})
       configs.push_back({is, is + " 320 px " + std::string(views) + " views", {std::string("collider.views=") + views}});
-  for (const auto& is : ctx.colliders({"is-gl"})) configs.push_back({is, is + " 320 px", {}});
-  for (const auto& os : ctx.colliders({"embree"})) configs.push_back({os, os, {}});
-  for (const auto& os : ctx.colliders({"fcl"})) configs.push_back({os, os, {}});
-  for (const auto& os : ctx.colliders({"bbtree"})) configs.push_back({os, os, {}});
+  // the other image-space colliders of the tables (is-cpu's sizes are swept above) at the default size; every
+  // object-space one, the lead first, and vdb's voxel size swept after them (the field's resolution is its accuracy)
+  for (const auto& is : ctx.colliders(in_tables(Family::kImageSpace)))
+    if (is != "is-cpu") configs.push_back({is, is + " 320 px", {}});
+  for (const auto& os : lead_first(kLeadObjectSpace, ctx.colliders(in_tables(Family::kObjectSpace))))
+    if (os != "vdb") configs.push_back({os, os, {}});
   for (const auto& os : ctx.colliders({"vdb"}))
     for (const char* voxel : {"0.004", "0.002"})
       configs.push_back({os, os + " voxel " + std::string(voxel), {std::string("collider.voxel_size=") + voxel}});
@@ -119,6 +124,7 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g, cons
       const RunResult& r = ctx.run(g.scene, c.collider, sets_for(ctx, n, c.sets));
       Point p;
       p.label = c.label;
+      p.image_space = collider_info(c.collider)->family == Family::kImageSpace;
       p.vertices = r.vertices;
       p.seconds = r.total_s();
       p.inside = r.accuracy.inside_pct;
@@ -175,7 +181,7 @@ std::string front_summary(const char* garment, const std::vector<Point>& pts) {
   for (const Point& p : pts) {
     if (!p.front) continue;
     ++front;
-    image += p.label.rfind("is-", 0) == 0 ? 1 : 0;
+    image += p.image_space ? 1 : 0;
     if (!fastest || p.seconds < fastest->seconds) fastest = &p;
   }
   return std::string(garment) + ": " + std::to_string(front) + " of " + std::to_string(pts.size()) +
@@ -245,72 +251,83 @@ void pareto(ExperimentContext& ctx) {
 // the stated limits of report.hpp (kAccuracyLimits), strain left out as minimal always stated them
 bool meets(const RunResult& r) { return limit_misses(r, false).empty(); }
 
-void minimal(ExperimentContext& ctx) {
-  struct Ladder {
-    const char* name;
-    const char* scene;
-    std::vector<int> sizes;
-    const char* paper;
-  };
-  const Ladder ladders[] = {
-      {"shirt", "dressing/shirt.toml", {200, 300, 400, 544, 800, 1200, 1800}, "544 (IS + faces), 1800 (OS)"},
-      {"dress", "dressing/dress.toml", {400, 600, 800, 1024, 1600, 2400, 3840}, "1024 (IS + faces), 3840 (OS)"},
-      {"skirt", "dressing/skirt.toml", {150, 200, 250, 336, 500, 672}, "336 (IS + faces)"},
-      {"trousers", "dressing/trousers.toml", {300, 400, 600, 800, 1200}, "560 (IS + faces)"}};
-  MarkdownTable t({"garment", "collider", "face queries", "smallest vertices meeting the limits", "its inside %",
-                   "its crossings %", "its seam gap [mm]", "paper"});
-  struct Setup {
-    std::string collider;
-    bool faces;
-    int views = 2;        // image space: the papers' front/back, or the cube of six
-    bool papers = false;  // image space: the papers' own test (z comparison on 8-bit maps, papers_image_space)
-    std::string label() const {
-      return collider + (views != 2 ? "+" + std::to_string(views) + "views" : "") + (papers ? "+papers-test" : "") +
-             (faces ? "+faces" : "");
-    }
-    std::string name() const {
-      const std::string more =
-          std::string(views != 2 ? std::to_string(views) + " views" : "") + (papers ? "the papers' test" : "");
-      return collider + (more.empty() ? "" : " (" + more + ")");
-    }
-  };
+// a garment's ladder of vertex counts, climbed until a size meets the limits
+struct Ladder {
+  const char* name;
+  const char* scene;
+  std::vector<int> sizes;
+  const char* paper;
+};
+const Ladder kLadders[] = {
+    {"shirt", "dressing/shirt.toml", {200, 300, 400, 544, 800, 1200, 1800}, "544 (IS + faces), 1800 (OS)"},
+    {"dress", "dressing/dress.toml", {400, 600, 800, 1024, 1600, 2400, 3840}, "1024 (IS + faces), 3840 (OS)"},
+    {"skirt", "dressing/skirt.toml", {150, 200, 250, 336, 500, 672}, "336 (IS + faces)"},
+    {"trousers", "dressing/trousers.toml", {300, 400, 600, 800, 1200}, "560 (IS + faces)"}};
+
+// a collider and how it detects (face queries, views, the papers' test)
+struct Setup {
+  std::string collider;
+  bool faces;
+  int views = 2;        // image space: the papers' front/back, or the cube of six
+  bool papers = false;  // image space: the papers' own test (z comparison on 8-bit maps, papers_image_space)
+  std::string label() const {
+    return collider + (views != 2 ? "+" + std::to_string(views) + "views" : "") + (papers ? "+papers-test" : "") +
+           (faces ? "+faces" : "");
+  }
+  std::string name() const {
+    const std::string more =
+        std::string(views != 2 ? std::to_string(views) + " views" : "") + (papers ? "the papers' test" : "");
+    return collider + (more.empty() ? "" : " (" + more + ")");
+  }
+};
+
+// is-cpu with and without face queries, six views and the papers' test; every object-space collider of the tables,
+// the lead one first
+std::vector<Setup> minimal_setups(const ExperimentContext& ctx) {
   std::vector<Setup> setups;
   for (const auto& c : ctx.colliders({"is-cpu"}))
     setups.push_back({c, false}), setups.push_back({c, true}), setups.push_back({c, false, 6}),
         setups.push_back({c, false, 2, true}),
         setups.push_back({c, true, 2, true});  // the papers' configuration for their Table 2 counts
-  for (const auto& c : ctx.colliders({"embree", "fcl", "vdb", "bbtree"})) setups.push_back({c, false});
-  const auto sets = [&](const Setup& s, int n) {
-    std::vector<std::string> extra{s.faces ? "solver.face_queries=true" : "solver.face_queries=false",
-                                   "collider.views=" + std::to_string(s.views)};
-    if (s.papers)
-      for (const auto& o : papers_image_space(s.collider)) extra.push_back(o);
-    return sets_for(ctx, n, extra);
-  };
-  // every ladder climbed rung by rung, all ladders at once: with reproduce --jobs N the runs of one rung (one
-  // per ladder still climbing) go to N worker processes, and a ladder stops at its first size meeting the limits
-  struct Climb {
-    const Ladder* ladder;
-    Setup setup;
-    std::size_t rung = 0;
-    const RunResult* found = nullptr;
-  };
-  std::vector<Climb> climbs;
-  for (const auto& l : ladders)
-    for (const auto& s : setups) climbs.push_back({&l, s});
+  for (const auto& c : lead_first(kLeadObjectSpace, ctx.colliders(in_tables(Family::kObjectSpace))))
+    setups.push_back({c, false});
+  return setups;
+}
+
+// a setup's overrides at n vertices
+std::vector<std::string> minimal_sets(const ExperimentContext& ctx, const Setup& s, int n) {
+  std::vector<std::string> extra{s.faces ? "solver.face_queries=true" : "solver.face_queries=false",
+                                 "collider.views=" + std::to_string(s.views)};
+  if (s.papers)
+    for (const auto& o : papers_image_space(s.collider)) extra.push_back(o);
+  return sets_for(ctx, n, extra);
+}
+
+// one ladder climbed by one setup: the rung it is on, the run that met the limits
+struct Climb {
+  const Ladder* ladder;
+  Setup setup;
+  std::size_t rung = 0;
+  const RunResult* found = nullptr;
+};
+
+// every ladder climbed rung by rung, all ladders at once: with reproduce --jobs N the runs of one rung (one
+// per ladder still climbing) go to N worker processes, and a ladder stops at its first size meeting the limits;
+// returns the runs made
+std::size_t climb(ExperimentContext& ctx, std::vector<Climb>& climbs) {
   const auto rungs = [&](const Climb& c) { return ctx.quick() ? std::size_t(1) : c.ladder->sizes.size(); };
   std::size_t runs = 0;
   for (bool climbing = true; climbing;) {
     std::vector<ExperimentContext::Request> requests;
     for (const Climb& c : climbs)
       if (!c.found && c.rung < rungs(c))
-        requests.push_back({c.ladder->scene, c.setup.collider, sets(c.setup, c.ladder->sizes[c.rung])});
+        requests.push_back({c.ladder->scene, c.setup.collider, minimal_sets(ctx, c.setup, c.ladder->sizes[c.rung])});
     ctx.prefetch(requests);
     climbing = false;
     for (Climb& c : climbs) {
       if (c.found || c.rung >= rungs(c)) continue;
       const int n = c.ladder->sizes[c.rung++];
-      const RunResult& r = ctx.run(c.ladder->scene, c.setup.collider, sets(c.setup, n));
+      const RunResult& r = ctx.run(c.ladder->scene, c.setup.collider, minimal_sets(ctx, c.setup, n));
       ++runs;
       ctx.add_run(r, std::string("minimal/") + c.ladder->name + "/" + c.setup.label() + "/" + std::to_string(n),
                   {{"meets_limits", meets(r) ? 1 : 0}});
@@ -318,6 +335,11 @@ void minimal(ExperimentContext& ctx) {
       climbing = climbing || (!c.found && c.rung < rungs(c));
     }
   }
+  return runs;
+}
+
+// the summary's line: per garment, its smallest size meeting the limits, and with what
+std::string smallest_line(const std::vector<Climb>& climbs) {
   std::map<std::string, std::string> smallest;  // per garment: its smallest size meeting the limits, and with what
   std::map<std::string, int> smallest_n;
   for (const Climb& c : climbs)
@@ -327,9 +349,21 @@ void minimal(ExperimentContext& ctx) {
                                  (c.setup.faces ? ", face queries" : "") + "; the papers " + c.ladder->paper + ")";
     }
   std::string ours = "Ours, the smallest size meeting inside, depth, seam gap and crossings, one run each:";
-  for (const Ladder& l : ladders)
-    ours += std::string(&l == ladders ? "" : ";") + " " + l.name + " " +
+  for (const Ladder& l : kLadders)
+    ours += std::string(&l == kLadders ? "" : ";") + " " + l.name + " " +
             (smallest.count(l.name) ? smallest[l.name] : std::string("none on the ladder"));
+  return ours;
+}
+
+void minimal(ExperimentContext& ctx) {
+  MarkdownTable t({"garment", "collider", "face queries", "smallest vertices meeting the limits", "its inside %",
+                   "its crossings %", "its seam gap [mm]", "paper"});
+  const std::vector<Setup> setups = minimal_setups(ctx);
+  std::vector<Climb> climbs;
+  for (const auto& l : kLadders)
+    for (const auto& s : setups) climbs.push_back({&l, s});
+  const std::size_t runs = climb(ctx, climbs);
+  const std::string ours = smallest_line(climbs);
   for (const Climb& c : climbs) {
     const Setup& s = c.setup;
     const RunResult* r = c.found;

@@ -87,7 +87,9 @@ std::string speed_boundaries(ExperimentContext& ctx, std::string& summary) {
   const std::vector<double> speeds = ctx.quick() ? std::vector<double>{0.5, 8} : std::vector<double>{0.5, 1, 2, 4, 8};
   MarkdownTable t({"collider", "largest speed without failure [m/s]", "first failure",
                    "max inside % during motion at each speed", "max crossings % during motion at each speed"});
-  std::vector<std::string> colliders = ctx.colliders({"is-cpu", "is-gl", "fcl", "embree", "vdb", "bbtree"});
+  // the analytic sphere first (the reference every collider is judged against), then every collider of the tables,
+  // is-cpu first
+  std::vector<std::string> colliders = lead_first(kLeadImageSpace, ctx.colliders(in_tables()));
   colliders.insert(colliders.begin(), "sphere");
   RunOptions per_frame;
   per_frame.measure_frames = true;
@@ -169,7 +171,7 @@ Misses measure_misses(const BodyFrame& body, const std::string& collider, const 
 }
 
 std::string map_boundaries(ExperimentContext& ctx, nlohmann::json& series) {
-  const std::vector<std::string> is = ctx.colliders({"is-cpu"});
+  const std::vector<std::string> is = ctx.colliders({"is-cpu"});  // the maps' own limits: the CPU rasteriser's
   if (is.empty()) return "\n### Map size: skipped (no image-space collider built)\n";
   const BodyModel model = load_body(kDebianHumanBody);
   const BodyFrame& body = model.rest();

@@ -44,7 +44,7 @@ void walking_t1(ExperimentContext& ctx) {
                    "paper", "paper ms/it", "paper CD&R ms", "paper CS ms", "paper CD&R %", "paper CS %", "inside [%]"});
   for (const auto& g : kT1)
     for (const std::string regime : kRegimes)
-      for (const Variant& v : with_ours(ctx.colliders(kAll))) {
+      for (const Variant& v : t1_variants(ctx)) {
         const RunResult& r = t1_run(ctx, g, v, regime);
         const auto& p =
             paper::kWalkingT1[(g.product == std::string("shirt") ? 0 : 2) + (image_space(v.collider) ? 0 : 1)];
@@ -70,7 +70,7 @@ void walking_t1(ExperimentContext& ctx) {
 }  // namespace
 
 void add_walking_t1_experiments(std::vector<Experiment>& out) {
-  out.push_back({"walking-t1", "Walking paper Table 1", walking_t1});
+  out.push_back({"walking-t1", "Walking paper Table 1", walking_t1, t1_runs});
 }
 
 }  // namespace clothbench

@@ -93,27 +93,45 @@ struct WalkVariant {
   bool speed = false;  // a row of the speed paragraph's frontier (taken from the dress with is-cpu)
 };
 
-// stable and papers' regimes with every collider on walk_07_01, stable on walk_08_02 with image space and the
-// fastest exact collider, then the ablations (is-cpu) and the travelling body (is-cpu and embree)
-std::vector<WalkVariant> walk_variants() {
-  const std::vector<std::string> all{"is-gl", "is-egl", "is-cpu", "fcl", "embree", "bbtree"},
-      some{"is-gl", "is-egl", "is-cpu", "embree"};
+// the papers' clock with walking Eq. 5's averaging limit (with the directional one, Eq. 6, the dress diverges
+// there), the regime's 32 passes stopping at 0.05 mm, then `more`
+std::vector<std::string> papers_clock(std::vector<std::string> more,
+                                      const std::string& tolerance_mm = kPapersTolerance) {
+  more.insert(more.begin(), {"solver.limit=velocity", "solver.limit_tolerance_mm=" + tolerance_mm});
+  return more;
+}
+
+// the papers' image space: the front/back pair of views with the papers' own test
+std::vector<std::string> papers_image_space_sets() {
+  std::vector<std::string> sets{"collider.views=2"};
+  for (const auto& o : papers_image_space("is-cpu")) sets.push_back(o);
+  return sets;
+}
+
+// stable and papers' regimes with every collider of the speed tables on walk_07_01, stable on walk_08_02 with image
+// space and the lead object-space collider; the other limits at the papers' clock (is-cpu)
+std::vector<WalkVariant> collider_variants(const ExperimentContext& ctx) {
+  const std::vector<std::string> all =
+      ctx.colliders([](const ColliderInfo& c) { return in_speed_tables(c) && !c.slow_update; });
+  // a collider whose update to the moved body takes seconds (vdb voxelises the skinned body again every frame):
+  // half a second of walking only
+  const std::vector<std::string> slow =
+      ctx.colliders([](const ColliderInfo& c) { return in_speed_tables(c) && c.slow_update; });
+  const std::vector<std::string> some = ctx.colliders([](const ColliderInfo& c) {
+    return in_speed_tables(c) && (c.family == Family::kImageSpace || c.name == kLeadObjectSpace);
+  });
   std::vector<WalkVariant> v;
   v.push_back({"stable", "walk_07_01", "stable", "", {}, all, true});
-  // vdb voxelises the skinned body again every frame (seconds each): half a second of walking only
-  v.push_back({"stable, 0.5 s", "walk_07_01", "stable", "/0.5s", {"body.end_s=1.5"}, {"vdb"}});
+  v.push_back({"stable, 0.5 s", "walk_07_01", "stable", "/0.5s", {"body.end_s=1.5"}, slow});
   v.push_back({"stable", "walk_08_02", "stable", "/walk_08_02", {"body.animation=walk_08_02"}, some, true});
-  // the papers' clock with walking Eq. 5's averaging limit (with the directional one, Eq. 6, the dress diverges
-  // there), the regime's 32 passes stopping at 0.05 mm
-  const auto papers_clock = [](std::vector<std::string> more, const std::string& tolerance_mm = kPapersTolerance) {
-    more.insert(more.begin(),
-                {"solver.limit=velocity", "solver.limit_tolerance_mm=" + tolerance_mm});
-    return more;
-  };
   v.push_back({"papers' clock, Eq. 5 limit", "walk_07_01", "papers", "/papers", papers_clock({}), all});
   const std::vector<std::string> is_cpu{"is-cpu"};
-  v.push_back({"papers' clock, directional limit (Eq. 6)", "walk_07_01", "papers", "/papers-eq6",
-               {"solver.limit=directional"}, is_cpu});
+  v.push_back({"papers' clock, directional limit (Eq. 6)",
+               "walk_07_01",
+               "papers",
+               "/papers-eq6",
+               {"solver.limit=directional"},
+               is_cpu});
   v.push_back({"papers' clock, Eq. 5 limit", "walk_08_02", "papers", "/papers/walk_08_02",
                papers_clock({"body.animation=walk_08_02"}), is_cpu});
   // beyond the papers: the strain limit as a fast projection (Goldenthal et al. 2007), 8 Newton iterations a call
@@ -124,10 +142,16 @@ std::vector<WalkVariant> walk_variants() {
   projection_08.push_back("body.animation=walk_08_02");
   v.push_back({"papers' clock, projection limit (8 iterations)", "walk_08_02", "papers",
                "/papers-projection/walk_08_02", projection_08, is_cpu});
-  std::vector<std::string> papers_is{"collider.views=2"};
-  for (const auto& o : papers_image_space("is-cpu")) papers_is.push_back(o);
+  return v;
+}
+
+// how the maps and the body are taken (is-cpu; every row's maps with the image space of the tables), and the next
+// frame prepared ahead
+std::vector<WalkVariant> map_variants(const ExperimentContext& ctx) {
+  const std::vector<std::string> is_cpu{"is-cpu"};
+  std::vector<WalkVariant> v;
   v.push_back({"stable, the papers' image space (front/back, z test, 8-bit)", "walk_07_01", "stable", "/papers-is",
-               papers_is, is_cpu});
+               papers_image_space_sets(), is_cpu});
   v.push_back({"stable, one surface per camera (visual hull)",
                "walk_07_01",
                "stable",
@@ -140,7 +164,7 @@ std::vector<WalkVariant> walk_variants() {
                "stable",
                "/allrows",
                {"collider.query_margin_mm=0"},
-               {"is-gl", "is-cpu"}});
+               ctx.colliders(in_tables(Family::kImageSpace))});
   // the next frame skinned and its maps drawn on a second thread while the cloth steps (the same run: timing rows)
   v.push_back({"stable, next frame prepared ahead (2 threads)",
                "walk_07_01",
@@ -149,6 +173,13 @@ std::vector<WalkVariant> walk_variants() {
                {"body.prepare_ahead=true"},
                is_cpu,
                true});
+  return v;
+}
+
+// the speed paragraph's rows (is-cpu)
+std::vector<WalkVariant> speed_variants() {
+  const std::vector<std::string> is_cpu{"is-cpu"};
+  std::vector<WalkVariant> v;
   // the speed row: the papers' clock with the next frame prepared on a second thread; then what looser limit passes
   // with one surface per camera, and one pass with the papers' own image space, buy in speed and cost in accuracy
   // (the speed paragraph's frontier)
@@ -179,6 +210,7 @@ std::vector<WalkVariant> walk_variants() {
   fast_08.push_back("body.animation=walk_08_02");
   v.push_back({fast_label, "walk_08_02", "papers", "/papers-ahead-fast/walk_08_02", fast_08, is_cpu, true});
   std::vector<std::string> published = papers_clock({"body.prepare_ahead=true", "solver.limit_passes=1"});
+  const std::vector<std::string> papers_is = papers_image_space_sets();
   published.insert(published.end(), papers_is.begin(), papers_is.end());
   v.push_back(
       {"papers' clock, Eq. 5 limit, 1 limit pass, the papers' image space (front/back, z test, 8-bit), "
@@ -194,12 +226,27 @@ std::vector<WalkVariant> walk_variants() {
   std::vector<std::string> projective_08 = projective;
   projective_08.push_back("body.animation=walk_08_02");
   v.push_back({projective_label, "walk_08_02", "stable", "/projective-ahead/walk_08_02", projective_08, is_cpu, true});
+  return v;
+}
+
+// the response's ablations (is-cpu) and the travelling body (is-cpu and embree)
+std::vector<WalkVariant> response_variants() {
+  const std::vector<std::string> is_cpu{"is-cpu"};
+  std::vector<WalkVariant> v;
   v.push_back({"stable, no push-out", "walk_07_01", "stable", "/nopush", {"solver.push_out=false"}, is_cpu});
   v.push_back({"stable, without Eq. 16", "walk_07_01", "stable", "/noeq16", {"solver.reaction_force=false"}, is_cpu});
-  v.push_back({"stable, body held per frame", "walk_07_01", "stable", "/held", {"body.move_between_frames=false"},
-               is_cpu});
-  v.push_back({"stable, travelling", "walk_07_01", "stable", "/travel", {"body.walk_in_place=false"},
-               {"is-cpu", "embree"}});
+  v.push_back(
+      {"stable, body held per frame", "walk_07_01", "stable", "/held", {"body.move_between_frames=false"}, is_cpu});
+  v.push_back(
+      {"stable, travelling", "walk_07_01", "stable", "/travel", {"body.walk_in_place=false"}, {"is-cpu", "embree"}});
+  return v;
+}
+
+// every walking-t2 row's variant, in the table's order
+std::vector<WalkVariant> walk_variants(const ExperimentContext& ctx) {
+  std::vector<WalkVariant> v = collider_variants(ctx);
+  for (const auto& part : {map_variants(ctx), speed_variants(), response_variants()})
+    v.insert(v.end(), part.begin(), part.end());
   return v;
 }
 
@@ -440,7 +487,7 @@ void walking_t2(ExperimentContext& ctx) {
     const double fps = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
     std::vector<std::pair<std::string, RunResult>> charted;
     meeting.push_back({g.product, {0, 0}});
-    for (const WalkVariant& variant : walk_variants())
+    for (const WalkVariant& variant : walk_variants(ctx))
       for (const auto& c : ctx.colliders(variant.colliders)) {
         // --quick: the code paths once (the second clip and the travelling body add none)
         if (ctx.quick() && (variant.clip != "walk_07_01" || variant.row_suffix == "/travel")) continue;

@@ -3,8 +3,8 @@
 // The brute reference is computed once per process and case (ctest runs each test alone).
 // Object-space colliders on exact geometry (fcl, embree) must agree exactly (hit/no-hit >= 99.99 %,
 // depth 1e-5 m, normal 1 deg, velocity 1 % or 1e-4 m/s). `vdb` samples a signed distance field of
-// voxel h = 2 mm (the default): see vdb_tolerance(). Image-space colliders ("is-*") are skipped
-// here: their looser, resolution-dependent tolerance test lives in tests/collide_is.
+// voxel h = 2 mm (the default): see vdb_tolerance(). Image-space colliders (Family::kImageSpace) are
+// skipped here: their looser, resolution-dependent tolerance test lives in tests/collide_is.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -116,15 +116,16 @@ class Conformance : public ::testing::TestWithParam<Param> {};
 
 TEST_P(Conformance, AgreesWithBrute) {
   const auto& [collider_name, case_name] = GetParam();
-  if (collider_name.rfind("is-", 0) == 0)
+  const Family family = collider_info(collider_name)->family;
+  if (family == Family::kImageSpace)
     GTEST_SKIP() << collider_name << " is image space: its tolerance test (pixel-sized depth error, "
                  << "silhouettes) lives in tests/collide_is";
   if (collider_name == "bbtree")
     GTEST_SKIP() << "bbtree is the dressing paper's vertex-face test with face normals, blind by design where "
                  << "a point is deeper than tol or beside every face: its own test lives in "
                  << "tests/collide_os/bbtree_collider_test.cpp";
-  if (collider_name == "brute" && case_name.rfind("body", 0) == 0)
-    GTEST_SKIP() << "brute is the reference; it is compared with itself on the analytic bodies only";
+  if (family == Family::kReference && case_name.rfind("body", 0) == 0)
+    GTEST_SKIP() << collider_name << " is the reference; it is compared with itself on the analytic bodies only";
   const auto& c = get_case(case_name);
   if (!c) GTEST_SKIP() << "data root absent: " << data_path(kWalkBody) << " not found (set CLOTHBENCH_DATA)";
 

@@ -4,9 +4,11 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "clothbench/bench/registry.hpp"
 #include "clothbench/bench/runner.hpp"
 #include "clothbench/experiments/markdown_table.hpp"
 #include "clothbench/experiments/statistics.hpp"
@@ -21,21 +23,45 @@ inline std::string regime_suffix(const std::string& regime, const std::string& s
   return regime == "stable" ? "" : sep + regime;
 }
 
-/// Issue 20: the paper tables run image space with the papers' own test by default: the z comparison along the view
+/// The paper tables run image space with the papers' own test by default: the z comparison along the view
 /// axis (dressing Eq. 9, walking Eq. 12) on 8-bit colour maps (dressing Eqs. 6-7, walking Eqs. 9-10); rows named
 /// "ours" run our default (the tangent-plane refinement on float maps). Empty for any other collider.
 inline std::vector<std::string> papers_image_space(const std::string& collider) {
-  if (collider.rfind("is-", 0) != 0) return {};
+  const std::optional<ColliderInfo> c = collider_info(collider);
+  if (!c || c->family != Family::kImageSpace) return {};
   return {"collider.tangent_plane=false", "collider.float_maps=false", "collider.layers=1"};
 }
 
-/// Issue 20: the paper tables' default for every collider: image space as papers_image_space, and the object-space
-/// colliders that offer it respond with face normals, as the dressing paper's bounding-box method did (section 7);
-/// rows named "ours" run our defaults (interpolated vertex normals). Empty for the others.
+/// The paper tables' default for every collider: image space as papers_image_space, and the object-space
+/// colliders that offer it (ColliderInfo::face_normals) respond with face normals, as the dressing paper's
+/// bounding-box method did (section 7); rows named "ours" run our defaults (interpolated vertex normals). Empty for
+/// the others.
 inline std::vector<std::string> papers_detection(const std::string& collider) {
-  if (collider == "fcl" || collider == "embree") return {"collider.face_normals=true"};
+  const std::optional<ColliderInfo> c = collider_info(collider);
+  if (c && c->family == Family::kObjectSpace && c->face_normals) return {"collider.face_normals=true"};
   return papers_image_space(collider);
 }
+
+/// The image-space collider the experiments lean on (built in every configuration): the ablations, the pictures
+/// and the claims are its runs.
+inline constexpr const char* kLeadImageSpace = "is-cpu";
+/// The object-space collider the verdicts lean on (exact): where a table sets one object-space collider against
+/// the others, or against image space, this one.
+inline constexpr const char* kLeadObjectSpace = "embree";
+
+/// The colliders the results tables list (ColliderInfo::in_tables), of every family.
+inline ColliderFilter in_tables() {
+  return [](const ColliderInfo& c) { return c.in_tables; };
+}
+/// The colliders the results tables list of one family.
+inline ColliderFilter in_tables(Family family) {
+  return [family](const ColliderInfo& c) { return c.in_tables && c.family == family; };
+}
+/// The colliders the tables of speed on the walking body list (walking-t2, colliders): those of every table, and
+/// those that draw on a GPU, whose speed is what they are for.
+inline bool in_speed_tables(const ColliderInfo& c) { return c.in_tables || c.needs == Needs::kGpu; }
+/// `names` with `lead` moved to the front where it is among them (the others keep their order).
+std::vector<std::string> lead_first(const std::string& lead, std::vector<std::string> names);
 
 /// The summary a results page opens with: "**Summary.**" and one "- " line each, then a blank line ("" for no
 /// lines). More than five lines is a logic error: a summary is the paper's figure, ours, the verdict.
@@ -71,8 +97,11 @@ class ExperimentContext {
                        const RunOptions& options = {}, int at_least = 1);
   /// Every repetition of the request that returned `r` (r alone when it is not one of run()'s).
   std::vector<const RunResult*> repetitions_of(const RunResult& r) const;
-  /// Colliders of `wanted` that this build has (the others are reported as not built).
+  /// Colliders of `wanted` that this build has (the others are reported as not built): a deliberate selection.
   std::vector<std::string> colliders(const std::vector<std::string>& wanted) const;
+  /// The built colliders `keep` accepts, in registry order (those it accepts that are not built are reported as
+  /// not built): every collider of a kind, a registered one included.
+  std::vector<std::string> colliders(const ColliderFilter& keep) const;
   /// Adds a JSON row for the current experiment (measurements not made by run()).
   void add_row(nlohmann::json row) { rows_.push_back(std::move(row)); }
   /// Adds the rows of a run() result named `name`, `extra` fields merged into each: with repetitions,
@@ -116,6 +145,9 @@ struct Experiment {
   std::string id;
   std::string title;
   std::function<void(ExperimentContext&)> run;
+  /// The scene runs its tables list, in their order, without running them (what `run` asks run() for); empty
+  /// where the experiment does not list them ahead.
+  std::function<std::vector<ExperimentContext::Request>(const ExperimentContext&)> runs = {};
 };
 
 /// Every experiment, in the order `reproduce` runs them.

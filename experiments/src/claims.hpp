@@ -1,0 +1,31 @@
+#pragma once
+// What the claims experiment's two files share: a claim's row and the rows of a page an experiment wrote before
+// it. claims.cpp measures its claims and reads dressing-t1's and walking-t2's pages; claims_pages.cpp judges the
+// claims that rest on minimal's and pareto's pages.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "clothbench/experiments/experiment.hpp"
+
+namespace clothbench::claim_rows {
+
+// one row of the claims table
+struct Claim {
+  std::string source, claim, experiment, numbers, verdict;
+};
+
+// what a claim that reads another experiment's page says when that page has not been written
+inline const std::string kNotRun = "not measured: run `clothbench reproduce` (all experiments) first";
+
+// rows of OUT/ID.json by name; empty when the experiment has not been run into OUT
+std::map<std::string, nlohmann::json> rows_of(ExperimentContext& ctx, const std::string& id);
+
+// dressing Table 2, section 6: face-body queries lower the minimum vertex count (minimal's page)
+Claim face_queries_claim(ExperimentContext& ctx);
+// dressing section 7: image space with face queries needs fewer vertices than the box tree (minimal's page)
+Claim box_tree_claim(ExperimentContext& ctx);
+// beyond the papers: image space with six views against embree's crossings and cost (pareto's page)
+Claim views_claim(ExperimentContext& ctx);
+
+}  // namespace clothbench::claim_rows
