@@ -30,8 +30,8 @@ using IndexAccessor = openvdb::Int32Grid::ConstAccessor;
 constexpr int kStencilVoxels = 3;
 // how deep inside [m] the field is kept (interior band, on top of kStencilVoxels): cloth the
 // response pushes out rarely gets this deep (the accuracy limit is 5 mm); deeper points take the
-// exact fallback (closest triangle on a box tree). On the walking body at 2 mm voxels a 2 cm band cost 3.1 s per
-// build, 1 cm about 2.6 s, 3 voxels 1.9 s: the voxelisation and the exterior band dominate
+// exact fallback (closest triangle on a box tree). A deeper band costs more voxels to build, a thinner one more
+// fallbacks; the voxelisation and the exterior band dominate a build either way
 constexpr Real kInteriorDepth = 0.01f;
 // refuse bodies whose narrow band would need more voxels than this (about 1 GB of grids)
 constexpr double kMaxBandVoxels = 1e8;

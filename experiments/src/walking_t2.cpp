@@ -394,7 +394,7 @@ std::vector<std::string> summary(const std::vector<SpeedRun>& frontier,
 }
 
 // the benchmark figure (the dress with sleeves, is-cpu, at the papers' clock, prepared ahead) and what
-// bounds it on this machine: the body's side of a frame (skinning and maps, on the second thread)
+// bounds it on the machine that ran it: the body's side of a frame (skinning and maps, on the second thread)
 std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const std::vector<SpeedRun>& frontier) {
   if (r.frames == 0 || r.divergence) return "";
   const FrameTimes f = frame_times(r);
