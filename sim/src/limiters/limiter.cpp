@@ -26,7 +26,9 @@ const std::vector<LimiterInfo>& limiter_registry() {
       {"follow", "Mueller, Kim, Chentanez 2012: follow the leader, swept from the held points", false,
        make_follow_limit},
       {"projection", "Goldenthal et al. 2007: fast projection of the over-stretched structural springs", false,
-       make_projection_limit}};
+       make_projection_limit},
+      {"impulses", "Catto 2005: walking Eq. 5 as accumulated impulses, warm-started from the last step", false,
+       make_impulses_limit}};
   return r;
 }
 

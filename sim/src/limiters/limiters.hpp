@@ -16,5 +16,6 @@ std::unique_ptr<Limiter> make_directional_literal_limit(const LimiterParams& par
 std::unique_ptr<Limiter> make_tether_limit(const LimiterParams& params);
 std::unique_ptr<Limiter> make_follow_limit(const LimiterParams& params);
 std::unique_ptr<Limiter> make_projection_limit(const LimiterParams& params);
+std::unique_ptr<Limiter> make_impulses_limit(const LimiterParams& params);
 
 }  // namespace clothbench
