@@ -234,6 +234,19 @@ TEST(Limiters, ProjectionHoldsTheHeldFrontsInAFewIterations) {
   EXPECT_GT(*sweep, kThreshold + 0.01f);
 }
 
+// our stable regime's stiff springs, the strip held taut at a 1 % threshold: the impulses carried over from the last
+// step must not wind up against the springs (at full weight they diverged here)
+TEST(Limiters, ImpulsesHoldATautStripInTheStableRegime) {
+  constexpr Real kTight = 0.01f;
+  for (const char* limit : {"velocity", "impulses"})
+    for (int passes : {1, 2}) {
+      const auto s = held_fronts(limit, passes, Regime::kStable, kTight);
+      std::printf("[ taut    ] %s, %d passes: %s\n", limit, passes, show(s).c_str());
+      ASSERT_TRUE(s.has_value()) << limit << " " << passes;
+      EXPECT_LE(*s, kTight + 0.01f) << limit << " " << passes;
+    }
+}
+
 TEST(Limiters, SleeveOnASwingingArm) {
   for (const char* limit : {"velocity", "directional", "tethers", "follow", "projection", "impulses"})
     for (int passes : {1, 32}) {
