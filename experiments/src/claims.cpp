@@ -15,6 +15,7 @@
 #include "clothbench/bench/timing_stats.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
+#include "clothbench/experiments/row_names.hpp"
 #include "clothbench/experiments/statistics.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
@@ -151,7 +152,7 @@ std::string fastest_object_space(const ExperimentContext& ctx, std::map<std::str
   std::string best;
   meets = false;
   for (const std::string& os : ctx.colliders(in_tables(Family::kObjectSpace))) {
-    const std::string name = "dressing-t1/" + garment + "/" + os;
+    const std::string name = row_names::dressing_t1(garment, os);
     if (!rows.count(name)) continue;
     const bool ok = detection_accurate(rows[name]);
     if (best.empty() || (ok && !meets) ||
@@ -172,7 +173,7 @@ Claim speed_claim(ExperimentContext& ctx) {
     const std::string os = fastest_object_space(ctx, rows, g, meets);
     if (os.empty()) continue;
     for (const std::string& is : ctx.colliders(in_tables(Family::kImageSpace))) {
-      const std::string a = std::string("dressing-t1/") + g + "/" + is;
+      const std::string a = row_names::dressing_t1(g, is);
       if (!rows.count(a)) continue;
       const double f = rows[os]["cdr_ms"].get<double>() / rows[a]["cdr_ms"].get<double>();
       lo = std::min(lo, f), hi = std::max(hi, f);
@@ -185,7 +186,7 @@ Claim speed_claim(ExperimentContext& ctx) {
               c.numbers;
   std::string own;  // the papers' own baseline, whatever its accuracy
   for (const char* g : {"shirt", "dress"}) {
-    const std::string is = std::string("dressing-t1/") + g + "/is-cpu", os = std::string("dressing-t1/") + g + "/bbtree";
+    const std::string is = row_names::dressing_t1(g, "is-cpu"), os = row_names::dressing_t1(g, "bbtree");
     if (rows.count(is) && rows.count(os))
       own += std::string(" ") + g + " " + num(rows[os]["cdr_ms"].get<double>() / rows[is]["cdr_ms"].get<double>(), 1) + "x";
   }
@@ -495,8 +496,8 @@ std::string reaction_walking(ExperimentContext& ctx, std::string& numbers) {
   auto rows = rows_of(ctx, "walking-t2");
   int better = 0, worse = 0, same = 0;
   for (const char* g : {"skirt", "dress_sleeves"}) {
-    const auto& with = rows[std::string("walking-t2/") + g + "/is-cpu"];
-    const auto& without = rows[std::string("walking-t2/") + g + "/is-cpu/noeq16"];
+    const auto& with = rows[row_names::walking_t2(g, "is-cpu")];
+    const auto& without = rows[row_names::walking_t2(g, "is-cpu", row_names::kWithoutEq16)];
     if (with.is_null() || without.is_null() || with.value("diverged", 0) || without.value("diverged", 0)) continue;
     const auto figures = [](const nlohmann::json& r) {
       return "depth max " + num(r.value("worst_frame_depth_max_mm", NAN), 1) + " mm, inside " +

@@ -1,6 +1,7 @@
 // dressing-t1: dressing paper Table 1, image space against object space (iterations, time, CD&R per iteration,
 // accuracy).
 #include "clothbench/bench/viewer_export.hpp"
+#include "clothbench/experiments/row_names.hpp"
 #include "experiment_list.hpp"
 #include "paper_tables.hpp"
 
@@ -64,7 +65,7 @@ void dressing_t1(ExperimentContext& ctx) {
                sew_cell(r, p.iterations), sew_time_cell(r), num(p.total_s, 1), num(p.ms_per_iteration, 1),
                num(r.ms_per_iteration() / p.ms_per_iteration, 3), accuracy_cells(r), r.converged ? "yes" : "no",
                limits_cell(r)});
-        ctx.add_run(r, std::string("dressing-t1/") + g.product + "/" + c + regime_suffix(regime, "/") + v.suffix());
+        ctx.add_run(r, row_names::dressing_t1(g.product, c, regime, v.ours));
         if (v.ours) continue;
         if (c == "is-cpu") pictures.push_back(regime_picture(ctx, r, "dressing-t1", g.product, regime));
         if (c == "is-cpu" && regime == "stable" && g.product == std::string("dress")) {

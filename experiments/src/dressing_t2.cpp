@@ -1,4 +1,5 @@
 // dressing-t2: dressing paper Table 2, the minimum vertex counts with face-body queries.
+#include "clothbench/experiments/row_names.hpp"
 #include "experiment_list.hpp"
 #include "paper_tables.hpp"
 
@@ -92,8 +93,7 @@ void dressing_t2(ExperimentContext& ctx) {
                iterations_cell(r), num(r.total_s(), 2), num(r.ms_per_iteration(), 3), std::to_string(p.vertices),
                std::to_string(p.iterations), sew_cell(r, p.iterations), sew_time_cell(r), num(p.total_s, 3),
                num(p.ms_per_iteration, 1), accuracy_cells(r), r.converged ? "yes" : "no", limits_cell(r)});
-        ctx.add_run(
-            r, std::string("dressing-t2/") + g.product + "/" + v.collider + regime_suffix(regime, "/") + v.suffix());
+        ctx.add_run(r, row_names::paper_table("dressing-t2", g.product, v.collider, regime, v.ours));
         if (v.collider == "is-cpu" && !v.ours)
           pictures.push_back(regime_picture(ctx, r, "dressing-t2", g.product, regime));
       }

@@ -81,7 +81,6 @@ struct Variant {
   std::string collider;
   bool ours = false;
   std::string label() const { return collider + (ours ? " (ours)" : ""); }
-  std::string suffix() const { return ours ? "/ours" : ""; }
   // `sets` with what the entry adds to the scene
   std::vector<std::string> with(std::vector<std::string> sets) const {
     if (!ours)

@@ -1,4 +1,5 @@
 // walking-t1: walking paper Table 1, the runs of dressing-t1 split into CD&R and CS.
+#include "clothbench/experiments/row_names.hpp"
 #include "experiment_list.hpp"
 #include "paper_tables.hpp"
 
@@ -54,8 +55,7 @@ void walking_t1(ExperimentContext& ctx) {
                num(100 * r.cdr_ms_per_iteration() / total, 1), num(100 * r.cs_ms_per_iteration() / total, 1), p.method,
                num(p.ms_per_iteration, 1), num(p.cdr_ms, 1), num(p.cs_ms, 1), num(p.cdr_pct, 1), num(p.cs_pct, 1),
                r.divergence ? "diverged" : num(r.accuracy.inside_pct, 2)});
-        ctx.add_run(r, std::string("walking-t1/") + g.product + "/" + v.collider + regime_suffix(regime, "/") +
-                           v.suffix());
+        ctx.add_run(r, row_names::paper_table("walking-t1", g.product, v.collider, regime, v.ours));
       }
   ctx.write("walking-t1", "Walking paper Table 1: CD&R vs CS time",
             "The runs of dressing-t1 (static body), in both regimes: ours (`stable`: stiff springs at the automatic "

@@ -15,6 +15,7 @@
 #include "clothbench/config.h"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
+#include "clothbench/experiments/row_names.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/render/picture.hpp"
 #include "experiment_list.hpp"
@@ -234,7 +235,7 @@ std::vector<WalkVariant> response_variants() {
   const std::vector<std::string> is_cpu{"is-cpu"};
   std::vector<WalkVariant> v;
   v.push_back({"stable, no push-out", "walk_07_01", "stable", "/nopush", {"solver.push_out=false"}, is_cpu});
-  v.push_back({"stable, without Eq. 16", "walk_07_01", "stable", "/noeq16", {"solver.reaction_force=false"}, is_cpu});
+  v.push_back({"stable, without Eq. 16", "walk_07_01", "stable", row_names::kWithoutEq16, {"solver.reaction_force=false"}, is_cpu});
   v.push_back(
       {"stable, body held per frame", "walk_07_01", "stable", "/held", {"body.move_between_frames=false"}, is_cpu});
   v.push_back(
@@ -531,7 +532,7 @@ void walking_t2(ExperimentContext& ctx) {
           if (variant.row_suffix == "/papers-ahead") speed_run = r;
         }
         proxy_mm = std::max(proxy_mm, r.proxy_deviation_mm);
-        ctx.add_run(r, std::string("walking-t2/") + g.name + "/" + c + variant.row_suffix);
+        ctx.add_run(r, row_names::walking_t2(g.name, c, variant.row_suffix));
         meeting.back().second.first += limit_misses(r).empty() ? 1 : 0;
         ++meeting.back().second.second;
         if (main) charted.emplace_back(c, r);

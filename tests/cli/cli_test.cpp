@@ -308,7 +308,9 @@ TEST_F(Cli, CollidersPrintsAnAlignedTableOrJson) {
   std::string header;
   std::getline(table, header);
   EXPECT_EQ(header.rfind("name ", 0), 0u) << header;
-  const std::size_t built = header.find("built"), description = header.find("description");
+  const std::size_t built = header.find("built"), family = header.find("family"),
+                    description = header.find("description");
+  ASSERT_NE(family, std::string::npos) << header;
   ASSERT_NE(description, std::string::npos) << header;
   for (const auto& c : colliders) {
     std::string line;
@@ -326,6 +328,14 @@ TEST_F(Cli, CollidersPrintsAnAlignedTableOrJson) {
     EXPECT_EQ(doc[i]["built"], colliders[i].built);
     EXPECT_EQ(doc[i]["option"], colliders[i].option);
     EXPECT_EQ(doc[i]["description"], colliders[i].description);
+    // the registry's traits, as experiments and tests choose colliders by them
+    EXPECT_EQ(doc[i]["exact"], colliders[i].exact);
+    EXPECT_EQ(doc[i]["in_tables"], colliders[i].in_tables);
+    EXPECT_EQ(doc[i]["coherent"], colliders[i].coherent);
+    EXPECT_EQ(doc[i]["face_normals"], colliders[i].face_normals);
+    EXPECT_EQ(doc[i]["slow_update"], colliders[i].slow_update);
+    EXPECT_EQ(doc[i]["family"] == "image space", colliders[i].family == clothbench::Family::kImageSpace);
+    EXPECT_EQ(doc[i]["needs"] == "nothing", colliders[i].needs == clothbench::Needs::kNothing);
   }
 }
 
