@@ -2,12 +2,9 @@
 // moves).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <sstream>
 
 #include "clothbench/bench/oracle.hpp"
 #include "clothbench/bench/report.hpp"
@@ -19,6 +16,7 @@
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/render/picture.hpp"
 #include "experiment_list.hpp"
+#include "walking_t2_media.hpp"
 
 namespace clothbench {
 
@@ -36,47 +34,6 @@ bool walking_body_present(ExperimentContext& ctx, const std::string& id) {
             {"The paper (walking Table 2): garments animated on a walking body.",
              "Ours: not run, the walking body was not found.", "No verdict."});
   return false;
-}
-
-// frames per second of a scene's animation (the video plays in real time)
-double scene_fps(ExperimentContext&, const std::string& scene) {
-  return load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
-}
-
-// an H.264 video of a numbered PNG sequence, when ffmpeg is on the PATH (skipped with a note otherwise)
-// (true when the video was written)
-bool make_video(const std::string& pattern, const std::string& mp4, double fps) {
-  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) {
-    std::cerr << "  note: ffmpeg not installed, no video " << mp4 << " (apt-get install ffmpeg)\n";
-    return false;
-  }
-  const std::string cmd = "ffmpeg -loglevel error -y -framerate " + num(fps, 0) + " -i '" + pattern +
-                          "' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + mp4 + "'";
-  if (std::system(cmd.c_str()) == 0) return true;
-  std::cerr << "  warning: ffmpeg failed for " << mp4 << "\n";
-  return false;
-}
-
-// one animation frame kept for the picture sequence: body and cloth vertex positions [m] (3 x n)
-struct SequenceFrame {
-  long frame;
-  double t;
-  Points3 body_positions, body_normals, cloth_positions;
-};
-
-// PREFIX-frameNNN.png per kept frame (front view), drawn on the run's final body and mesh topology
-void write_sequence(PictureRenderer& pictures, const std::vector<SequenceFrame>& sequence, const RunResult& r,
-                    const std::string& prefix) {
-  BodyFrame body = r.final_body;
-  ClothMesh mesh = r.mesh;
-  for (const auto& f : sequence) {
-    body.positions = f.body_positions;
-    body.normals = f.body_normals;
-    mesh.positions = f.cloth_positions;
-    char name[32];
-    std::snprintf(name, sizeof name, "-frame%03ld.png", f.frame);
-    pictures.render(body, mesh, 200, View::kFront).write_png(prefix + name);
-  }
 }
 
 // how much cloth time a frame of the walk is in one regime: steps of dt against the body's frame
@@ -436,130 +393,126 @@ std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const
          speed_frontier(frontier) + "\n\n";
 }
 
-// inside and crossings against animation time, one series per collider (and the limits)
-nlohmann::json frames_chart(const std::string& product, const std::vector<std::pair<std::string, RunResult>>& runs) {
-  nlohmann::json series = nlohmann::json::array();
-  double t0 = 1e9, t1 = -1e9;
-  for (const auto& [collider, r] : runs) {
-    if (r.frame_samples.empty()) continue;
-    std::vector<double> t, inside, crossings;
-    for (const FrameSample& f : r.frame_samples) t.push_back(f.t_s), inside.push_back(f.inside_pct),
-                                                 crossings.push_back(f.crossings_pct);
-    t0 = std::min(t0, t.front()), t1 = std::max(t1, t.back());
-    series.push_back({{"label", collider + " crossings"}, {"x", t}, {"y", crossings}, {"style", "-"}});
-    series.push_back({{"label", collider + " inside"}, {"x", t}, {"y", inside}, {"style", "--"}});
-  }
-  if (t1 > t0) {
-    series.push_back({{"label", "limit: crossings 1 %"}, {"x", {t0, t1}}, {"y", {kAccuracyLimits.crossings_pct,
-                                                                                kAccuracyLimits.crossings_pct}},
-                      {"style", "k:"}});
-    series.push_back({{"label", "limit: inside 0.5 %"}, {"x", {t0, t1}}, {"y", {kAccuracyLimits.inside_pct,
-                                                                               kAccuracyLimits.inside_pct}},
-                      {"style", "k-."}});
-  }
-  return {{"title", "walking-t2: " + product + ", walk_07_01, stable regime, every frame"},
-          {"xlabel", "animation time [s]"},
-          {"ylabel", "share of the cloth [%]"},
-          {"series", series}};
-}
+// the walk's garments, as the paper's Table 2 has them
+struct WalkGarment {
+  const char* product;
+  const char* name;
+  int vertices;
+};
 
-void walking_t2(ExperimentContext& ctx) {
-  if (!walking_body_present(ctx, "walking-t2")) return;
-  struct G {
-    const char* product;
-    const char* name;
-    int vertices;
-  };
-  const G garments[] = {{"skirt", "skirt", 672}, {"dress with sleeves", "dress_sleeves", 2300}};
-  MarkdownTable t({"garment", "variant", "clip", "collider", "vertices", "frames", "steps/frame at dt", "s/frame",
-                   "frames/s", "skinning ms/frame", "maps, refit or field ms/frame", "cloth ms/frame (CD&R + CS)",
-                   "paper s/frame / frames/s", "inside [%] worst / mean frame", "depth max [mm] worst frame",
-                   "crossings [%] worst / mean frame", "strain max / p99 [%] worst frame", "meets the limits (every frame)"});
+// what walking-t2 gathers over its runs for the page
+struct WalkPage {
+  MarkdownTable table{{"garment", "variant", "clip", "collider", "vertices", "frames", "steps/frame at dt", "s/frame",
+                       "frames/s", "skinning ms/frame", "maps, refit or field ms/frame", "cloth ms/frame (CD&R + CS)",
+                       "paper s/frame / frames/s", "inside [%] worst / mean frame", "depth max [mm] worst frame",
+                       "crossings [%] worst / mean frame", "strain max / p99 [%] worst frame",
+                       "meets the limits (every frame)"}};
   std::string media, charts, models, clocks;
   std::vector<SpeedRun> frontier;
   std::vector<std::pair<std::string, std::pair<int, int>>> meeting;  // per garment: rows within every limit, rows
   std::optional<RunResult> speed_run;
   double proxy_mm = 0;  // the simplified body's largest distance from the exact one, where a row simplifies it
+};
+
+// the is-cpu run of the stable regime: its frame sequence (every frame, front view), a video of it where Debian's
+// ffmpeg is installed, and its end state from the front and the side
+void write_pictures(ExperimentContext& ctx, const WalkGarment& g, double fps, const std::vector<SequenceFrame>& sequence,
+                    const RunResult& r, WalkPage& page) {
+  const std::string stem = std::string("pictures/walking-t2-") + g.name;
+  write_sequence(ctx.pictures(), sequence, r, ctx.path(stem + "/" + stem.substr(9)));
+  // the video plays in real time: the scene's frames per second
+  const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"), fps);
+  page.media += "- " + std::string(g.product) + ": [end state](" + stem + ".png), " + std::to_string(sequence.size()) +
+                " frames in `" + stem + "/`" +
+                (video ? ", [video](" + stem + ".mp4)" : std::string(", no video (ffmpeg absent)")) + "\n";
+  std::vector<Image> views;
+  for (View v : {View::kFront, View::kSide}) views.push_back(ctx.pictures().render(r.final_body, r.mesh, 360, v));
+  side_by_side(views).write_png(ctx.path(stem + ".png"));
+}
+
+// the report's 3-D viewer: a walk as animated binary glTF (12 frames kept)
+void write_model(ExperimentContext& ctx, const WalkGarment& g, const std::string& collider,
+                 const std::vector<SequenceFrame>& sequence, const RunResult& r, WalkPage& page) {
+  std::vector<ViewerFrame> frames;
+  for (const auto& f : sequence) frames.push_back({f.t, f.body_positions, f.cloth_positions});
+  const std::string glb = std::string("pictures/walking-t2-") + g.name + "-" + collider + ".glb";
+  export_viewer_gltf(ctx.path(glb), r.final_body, r.mesh, frames, 12);
+  page.models += (page.models.empty() ? "" : ", ") + ("[" + std::string(g.product) + ", " + collider + "](" + glb + ")");
+}
+
+// one run's row and what the page gathers from it (garment i of the table)
+void account(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, const WalkVariant& variant,
+             const std::string& c, const RunResult& r, double fps, WalkPage& page) {
+  const bool main = variant.label == "stable" && variant.clip == "walk_07_01";
+  page.table.row(walk_row(g.product, variant, c, r, paper::kWalkingT2[i]));
+  // the cloth's clock and what holds the garment, from the is-cpu runs of both regimes on walk_07_01
+  if (c == "is-cpu" && (main || (variant.row_suffix == "/papers" && r.frames))) {
+    if (main)
+      page.clocks += std::string(page.clocks.empty() ? "" : "; ") + g.product + ": " +
+                     (r.mesh.attached.empty() ? std::string("nothing attached")
+                                              : std::to_string(r.mesh.attached.size()) +
+                                                    " vertices attached to the body (its waist, Durupinar 3.2)");
+    page.clocks += ", " + frame_clock(variant.regime, r, fps);
+  }
+  // the speed paragraph's rows: the dress with is-cpu prepared ahead at the papers' clock, and in the stable
+  // regime (one thread and prepared ahead)
+  if (i == 1 && c == "is-cpu" && variant.speed) {
+    const bool failed = r.frames == 0 || r.divergence || !dressed(r);
+    page.frontier.push_back({variant.label, variant.clip, failed ? 0.0 : 1 / frame_times(r).s,
+                             failed ? std::string("diverged or not dressed") : accuracy_misses(r), frame_times(r),
+                             100 * r.animate_strain_max, limit_misses(r).size() > limit_misses(r, false).size()});
+    if (variant.row_suffix == "/papers-ahead") page.speed_run = r;
+  }
+  page.proxy_mm = std::max(page.proxy_mm, r.proxy_deviation_mm);
+  ctx.add_run(r, row_names::walking_t2(g.name, c, variant.row_suffix));
+  page.meeting.back().second.first += limit_misses(r).empty() ? 1 : 0;
+  ++page.meeting.back().second.second;
+}
+
+// every variant and collider on one garment (garment i of the table), and its chart of every frame
+void walk_garment(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, WalkPage& page) {
   std::vector<std::string> sets_quick;
   if (ctx.quick()) sets_quick = {"body.start_s=0.1", "body.end_s=0.2", "stop.max_iterations=60"};
-  for (std::size_t i = 0; i < 2; ++i) {
-    const auto& g = garments[i];
-    const std::string scene = std::string("walking/") + g.name + ".toml";
-    const double fps = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
-    std::vector<std::pair<std::string, RunResult>> charted;
-    meeting.push_back({g.product, {0, 0}});
-    for (const WalkVariant& variant : walk_variants(ctx))
-      for (const auto& c : ctx.colliders(variant.colliders)) {
-        // --quick: the code paths once (the second clip and the travelling body add none)
-        if (ctx.quick() && (variant.clip != "walk_07_01" || variant.row_suffix == "/travel")) continue;
-        std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices), "solver.regime=" + variant.regime};
-        sets.insert(sets.end(), variant.sets.begin(), variant.sets.end());
-        sets.insert(sets.end(), sets_quick.begin(), sets_quick.end());
-        // the is-cpu run of the stable regime also leaves a frame sequence (every frame, front view) and, where
-        // Debian's ffmpeg is installed, a video of it; frames are only copied during the run and drawn after it,
-        // so the pictures stay out of the measured s/frame
-        RunOptions options;
-        options.measure_frames = true;  // accuracy at every frame, not the last one only
-        const bool main = variant.label == "stable" && variant.clip == "walk_07_01";
-        const bool pictures = c == "is-cpu" && main;
-        // the report's 3-D viewer: the is-cpu walk of each garment, and embree beside it on the skirt
-        const bool animated = main && (c == "is-cpu" || (c == "embree" && i == 0));
-        const std::string stem = std::string("pictures/walking-t2-") + g.name;
-        std::vector<SequenceFrame> sequence;
-        if (animated)
-          options.on_frame = [&](long frame, double at, const BodyFrame& body, const Simulator& sim) {
-            if (frame == 1) sequence.clear();  // a repetition starts over
-            sequence.push_back({frame, at, body.positions, body.normals, sim.positions()});
-          };
-        const RunResult& r = ctx.run(scene, c, sets, options);
-        t.row(walk_row(g.product, variant, c, r, paper::kWalkingT2[i]));
-        // the cloth's clock and what holds the garment, from the is-cpu runs of both regimes on walk_07_01
-        if (c == "is-cpu" && (main || (variant.row_suffix == "/papers" && r.frames))) {
-          if (main)
-            clocks += std::string(clocks.empty() ? "" : "; ") + g.product + ": " +
-                      (r.mesh.attached.empty() ? std::string("nothing attached")
-                                               : std::to_string(r.mesh.attached.size()) +
-                                                     " vertices attached to the body (its waist, Durupinar 3.2)");
-          clocks += ", " + frame_clock(variant.regime, r, fps);
-        }
-        // the speed paragraph's rows: the dress with is-cpu prepared ahead at the papers' clock, and in the stable
-        // regime (one thread and prepared ahead)
-        if (i == 1 && c == "is-cpu" && variant.speed) {
-          const bool failed = r.frames == 0 || r.divergence || !dressed(r);
-          frontier.push_back({variant.label, variant.clip, failed ? 0.0 : 1 / frame_times(r).s,
-                              failed ? std::string("diverged or not dressed") : accuracy_misses(r), frame_times(r),
-                              100 * r.animate_strain_max, limit_misses(r).size() > limit_misses(r, false).size()});
-          if (variant.row_suffix == "/papers-ahead") speed_run = r;
-        }
-        proxy_mm = std::max(proxy_mm, r.proxy_deviation_mm);
-        ctx.add_run(r, row_names::walking_t2(g.name, c, variant.row_suffix));
-        meeting.back().second.first += limit_misses(r).empty() ? 1 : 0;
-        ++meeting.back().second.second;
-        if (main) charted.emplace_back(c, r);
-        if (animated) {
-          std::vector<ViewerFrame> frames;
-          for (const auto& f : sequence) frames.push_back({f.t, f.body_positions, f.cloth_positions});
-          const std::string glb = stem + "-" + c + ".glb";
-          export_viewer_gltf(ctx.path(glb), r.final_body, r.mesh, frames, 12);
-          models += (models.empty() ? "" : ", ") + ("[" + std::string(g.product) + ", " + c + "](" + glb + ")");
-        }
-        if (!pictures) continue;
-        write_sequence(ctx.pictures(), sequence, r, ctx.path(stem + "/" + stem.substr(9)));
-        const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"),
-                                      scene_fps(ctx, scene));
-        media += "- " + std::string(g.product) + ": [end state](" + stem + ".png), " + std::to_string(sequence.size()) +
-                 " frames in `" + stem + "/`" +
-                 (video ? ", [video](" + stem + ".mp4)" : std::string(", no video (ffmpeg absent)")) + "\n";
-        std::vector<Image> views;
-        for (View v : {View::kFront, View::kSide}) views.push_back(ctx.pictures().render(r.final_body, r.mesh, 360, v));
-        side_by_side(views).write_png(ctx.path(stem + ".png"));
-      }
-    const std::string chart = std::string("walking-t2-frames-") + g.name;
-    if (ctx.chart(chart, frames_chart(g.product, charted)))
-      charts += "![" + std::string(g.product) + ": inside and crossings at every frame](" + chart + ".png)\n";
-  }
-  ctx.write(
-      "walking-t2", "Walking paper Table 2: animation speed on the walking body",
+  const std::string scene = std::string("walking/") + g.name + ".toml";
+  const double fps = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/" + scene).body.fps;
+  std::vector<std::pair<std::string, RunResult>> charted;
+  page.meeting.push_back({g.product, {0, 0}});
+  for (const WalkVariant& variant : walk_variants(ctx))
+    for (const auto& c : ctx.colliders(variant.colliders)) {
+      // --quick: the code paths once (the second clip and the travelling body add none)
+      if (ctx.quick() && (variant.clip != "walk_07_01" || variant.row_suffix == "/travel")) continue;
+      std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices), "solver.regime=" + variant.regime};
+      sets.insert(sets.end(), variant.sets.begin(), variant.sets.end());
+      sets.insert(sets.end(), sets_quick.begin(), sets_quick.end());
+      // the is-cpu run of the stable regime also leaves pictures, and the 3-D viewer takes the is-cpu walk of each
+      // garment and embree beside it on the skirt; frames are only copied during the run and drawn after it, so
+      // the pictures stay out of the measured s/frame
+      RunOptions options;
+      options.measure_frames = true;  // accuracy at every frame, not the last one only
+      const bool main = variant.label == "stable" && variant.clip == "walk_07_01";
+      const bool animated = main && (c == "is-cpu" || (c == "embree" && i == 0));
+      std::vector<SequenceFrame> sequence;
+      if (animated)
+        options.on_frame = [&](long frame, double at, const BodyFrame& body, const Simulator& sim) {
+          if (frame == 1) sequence.clear();  // a repetition starts over
+          sequence.push_back({frame, at, body.positions, body.normals, sim.positions()});
+        };
+      const RunResult& r = ctx.run(scene, c, sets, options);
+      account(ctx, i, g, variant, c, r, fps, page);
+      if (main) charted.emplace_back(c, r);
+      if (animated) write_model(ctx, g, c, sequence, r, page);
+      if (c == "is-cpu" && main) write_pictures(ctx, g, fps, sequence, r, page);
+    }
+  const std::string chart = std::string("walking-t2-frames-") + g.name;
+  if (ctx.chart(chart, frames_chart(g.product, charted)))
+    page.charts += "![" + std::string(g.product) + ": inside and crossings at every frame](" + chart + ".png)\n";
+}
+
+// the page's text before the table: what runs, how the body moves, what each ablation row changes
+std::string description(const WalkPage& page) {
+  const std::string& clocks = page.clocks;
+  const double proxy_mm = page.proxy_mm;
+  return
       "Garments dressed on the bind pose (t = 0, sew + drape with `collider.dress_with`), carried through the clip's "
       "lead-in (0 - 1 s), then measured over **two seconds of walking** (1 - 3 s, about two gait cycles) in place, on "
       "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
@@ -613,16 +566,28 @@ void walking_t2(ExperimentContext& ctx) {
       "within " +
           num(proxy_mm, 1) +
           " mm of the copy) while the oracle measures against the exact body. And "
-          "\"travelling\" keeps the root's motion (the maps follow the body).\n\n" +
-          t.str() + "\n" + (speed_run ? speed_figure(*speed_run, paper::kWalkingT2[1], frontier) : std::string()) +
-          charts +
-          (media.empty() ? std::string()
-                         : "\nPictures of the is-cpu runs (front view; " + ctx.pictures().name() +
-                               "; frames are copied during the run and drawn after it, outside s/frame):\n\n" + media) +
-          (models.empty() ? std::string()
-                          : "\nAnimated binary glTF of the walks (12 frames kept, for results/index.html's viewer): " +
-                                models + ".\n"),
-      summary(frontier, meeting));
+          "\"travelling\" keeps the root's motion (the maps follow the body).\n\n";
+}
+
+void walking_t2(ExperimentContext& ctx) {
+  if (!walking_body_present(ctx, "walking-t2")) return;
+  const WalkGarment garments[] = {{"skirt", "skirt", 672}, {"dress with sleeves", "dress_sleeves", 2300}};
+  WalkPage page;
+  for (std::size_t i = 0; i < 2; ++i) walk_garment(ctx, i, garments[i], page);
+  ctx.write(
+      "walking-t2", "Walking paper Table 2: animation speed on the walking body",
+      description(page) + page.table.str() + "\n" +
+          (page.speed_run ? speed_figure(*page.speed_run, paper::kWalkingT2[1], page.frontier) : std::string()) +
+          page.charts +
+          (page.media.empty() ? std::string()
+                              : "\nPictures of the is-cpu runs (front view; " + ctx.pictures().name() +
+                                    "; frames are copied during the run and drawn after it, outside s/frame):\n\n" +
+                                    page.media) +
+          (page.models.empty() ? std::string()
+                               : "\nAnimated binary glTF of the walks (12 frames kept, for results/index.html's "
+                                 "viewer): " +
+                                     page.models + ".\n"),
+      summary(page.frontier, page.meeting));
 }
 
 }  // namespace
