@@ -24,7 +24,7 @@ namespace {
 
 // the share of the last step's impulses a step starts from: at full weight the accumulated impulse acts on stiff
 // springs as an integral controller acts on a plant with a delay, and a strip held taut between two fronts in the
-// stable regime diverged at thresholds of 1 % and less (0.8 held it to 5 %, 0.5 to 1.5 %, a sweep of Eq. 5 to 1.2 %)
+// stable regime diverged at tight thresholds (Limiters.ImpulsesHoldATautStripInTheStableRegime)
 constexpr Real kWarm = 0.5f;
 
 class Impulses final : public Limiter {
