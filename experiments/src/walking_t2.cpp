@@ -414,14 +414,14 @@ struct WalkPage {
   double proxy_mm = 0;  // the simplified body's largest distance from the exact one, where a row simplifies it
 };
 
-// the is-cpu run of the stable regime: its frame sequence (every frame, front view), a video of it where Debian's
-// ffmpeg is installed, and its end state from the front and the side
-void write_pictures(ExperimentContext& ctx, const WalkGarment& g, double fps, const std::vector<SequenceFrame>& sequence,
-                    const RunResult& r, WalkPage& page) {
+// the is-cpu run of the stable regime: its frame sequence (every frame, front view), a video of it in real time (the
+// scene's `fps`) where Debian's ffmpeg is installed, and its end state from the front and the side
+void write_pictures(ExperimentContext& ctx, const WalkGarment& g, double fps,
+                    const std::vector<SequenceFrame>& sequence, const RunResult& r, WalkPage& page) {
   const std::string stem = std::string("pictures/walking-t2-") + g.name;
   write_sequence(ctx.pictures(), sequence, r, ctx.path(stem + "/" + stem.substr(9)));
-  // the video plays in real time: the scene's frames per second
-  const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"), fps);
+  const bool video =
+      make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"), fps);
   page.media += "- " + std::string(g.product) + ": [end state](" + stem + ".png), " + std::to_string(sequence.size()) +
                 " frames in `" + stem + "/`" +
                 (video ? ", [video](" + stem + ".mp4)" : std::string(", no video (ffmpeg absent)")) + "\n";
@@ -437,7 +437,8 @@ void write_model(ExperimentContext& ctx, const WalkGarment& g, const std::string
   for (const auto& f : sequence) frames.push_back({f.t, f.body_positions, f.cloth_positions});
   const std::string glb = std::string("pictures/walking-t2-") + g.name + "-" + collider + ".glb";
   export_viewer_gltf(ctx.path(glb), r.final_body, r.mesh, frames, 12);
-  page.models += (page.models.empty() ? "" : ", ") + ("[" + std::string(g.product) + ", " + collider + "](" + glb + ")");
+  page.models +=
+      (page.models.empty() ? "" : ", ") + ("[" + std::string(g.product) + ", " + collider + "](" + glb + ")");
 }
 
 // one run's row and what the page gathers from it (garment i of the table)
@@ -481,7 +482,8 @@ void walk_garment(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, W
     for (const auto& c : ctx.colliders(variant.colliders)) {
       // --quick: the code paths once (the second clip and the travelling body add none)
       if (ctx.quick() && (variant.clip != "walk_07_01" || variant.row_suffix == "/travel")) continue;
-      std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices), "solver.regime=" + variant.regime};
+      std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices),
+                                    "solver.regime=" + variant.regime};
       sets.insert(sets.end(), variant.sets.begin(), variant.sets.end());
       sets.insert(sets.end(), sets_quick.begin(), sets_quick.end());
       // the is-cpu run of the stable regime also leaves pictures, and the 3-D viewer takes the is-cpu walk of each
@@ -510,8 +512,6 @@ void walk_garment(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, W
 
 // the page's text before the table: what runs, how the body moves, what each ablation row changes
 std::string description(const WalkPage& page) {
-  const std::string& clocks = page.clocks;
-  const double proxy_mm = page.proxy_mm;
   return
       "Garments dressed on the bind pose (t = 0, sew + drape with `collider.dress_with`), carried through the clip's "
       "lead-in (0 - 1 s), then measured over **two seconds of walking** (1 - 3 s, about two gait cycles) in place, on "
@@ -538,7 +538,7 @@ std::string description(const WalkPage& page) {
       "seams are still open when the walk starts (gap > 2 mm) gets no timings: it is listed as not dressed. "
       "The walk is in place (`body.walk_in_place`: the root's travel removed). "
       "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +
-          clocks + ".\n\n"
+          page.clocks + ".\n\n"
       "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end, and each "
       "cloth step within the frame sees the contacts as they were at the step's time, d(t - tau) = d(t) + "
       "(n . v_body) tau (`body.move_between_frames`); points found inside are moved out along the contact normal "
@@ -564,7 +564,7 @@ std::string description(const WalkPage& page) {
       "rows \"the colliders' body simplified\" (`body.collision_triangles`) hand the colliders a copy of the body "
       "with fewer triangles (edge collapses that keep some of its own vertices and their skin; every exact vertex "
       "within " +
-          num(proxy_mm, 1) +
+          num(page.proxy_mm, 1) +
           " mm of the copy) while the oracle measures against the exact body. And "
           "\"travelling\" keeps the root's motion (the maps follow the body).\n\n";
 }

@@ -40,18 +40,20 @@ nlohmann::json frames_chart(const std::string& product, const std::vector<std::p
   for (const auto& [collider, r] : runs) {
     if (r.frame_samples.empty()) continue;
     std::vector<double> t, inside, crossings;
-    for (const FrameSample& f : r.frame_samples) t.push_back(f.t_s), inside.push_back(f.inside_pct),
-                                                 crossings.push_back(f.crossings_pct);
+    for (const FrameSample& f : r.frame_samples)
+      t.push_back(f.t_s), inside.push_back(f.inside_pct), crossings.push_back(f.crossings_pct);
     t0 = std::min(t0, t.front()), t1 = std::max(t1, t.back());
     series.push_back({{"label", collider + " crossings"}, {"x", t}, {"y", crossings}, {"style", "-"}});
     series.push_back({{"label", collider + " inside"}, {"x", t}, {"y", inside}, {"style", "--"}});
   }
   if (t1 > t0) {
-    series.push_back({{"label", "limit: crossings 1 %"}, {"x", {t0, t1}}, {"y", {kAccuracyLimits.crossings_pct,
-                                                                                kAccuracyLimits.crossings_pct}},
+    series.push_back({{"label", "limit: crossings 1 %"},
+                      {"x", {t0, t1}},
+                      {"y", {kAccuracyLimits.crossings_pct, kAccuracyLimits.crossings_pct}},
                       {"style", "k:"}});
-    series.push_back({{"label", "limit: inside 0.5 %"}, {"x", {t0, t1}}, {"y", {kAccuracyLimits.inside_pct,
-                                                                               kAccuracyLimits.inside_pct}},
+    series.push_back({{"label", "limit: inside 0.5 %"},
+                      {"x", {t0, t1}},
+                      {"y", {kAccuracyLimits.inside_pct, kAccuracyLimits.inside_pct}},
                       {"style", "k-."}});
   }
   return {{"title", "walking-t2: " + product + ", walk_07_01, stable regime, every frame"},

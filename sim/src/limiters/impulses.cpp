@@ -129,7 +129,8 @@ Real Impulses::pass_springs(LimitState& s) {
     const Vec3 dv = s.v.col(static_cast<Eigen::Index>(pb)) - s.v.col(static_cast<Eigen::Index>(pa));
     const Vec3 d_end = d + dt * dv;  // the length this step would give (Eq. 3 position update)
     const Real len_end2 = d_end.squaredNorm();
-    if (l.impulse == 0 && l.excess == 0 && !(len_end2 > l.max_len * l.max_len)) continue;  // most springs: no square root
+    if (l.impulse == 0 && l.excess == 0 && !(len_end2 > l.max_len * l.max_len))
+      continue;  // most springs: no square root
     const Real wa = w(l.a), wb = w(l.b), len_end = std::sqrt(len_end2);
     if (pa == pb || !(wa + wb > 0) || !(len_end > 0)) continue;
     // the end-of-step line, pointing as the spring points now: ends that would pass each other within the step
@@ -199,20 +200,18 @@ void Impulses::limit_velocities(LimitState& s, bool contacts_hold) {
   for (const auto& group : s.merged)
     for (int i : group) s.v.col(i) = s.v.col(group.front());
   if (!contacts_hold) keep_warm();
-
 }
 
 void Impulses::limit_positions(LimitState& s) {
   // the shortening of springs past max_len moved the positions over the step; the velocities do not keep it (split
   // impulses, after Catto: kept, the next step's warm start would correct the same excess again)
   if (shortening_.cols() != s.v.cols()) return;
-  for (Eigen::Index i = 0; i < s.v.cols(); ++i) s.v.col(i) -= shortening_.col(static_cast<Eigen::Index>(point(static_cast<int>(i))));
+  for (Eigen::Index i = 0; i < s.v.cols(); ++i)
+    s.v.col(i) -= shortening_.col(static_cast<Eigen::Index>(point(static_cast<int>(i))));
 }
 
 }  // namespace
 
-std::unique_ptr<Limiter> make_impulses_limit(const LimiterParams& params) {
-  return std::make_unique<Impulses>(params);
-}
+std::unique_ptr<Limiter> make_impulses_limit(const LimiterParams& params) { return std::make_unique<Impulses>(params); }
 
 }  // namespace clothbench
