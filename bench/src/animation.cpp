@@ -158,7 +158,7 @@ void animate(const RunContext& run, RunResult& r) {
   lead_in(a, lead);
   // the collider under test takes the body where the lead-in left it; its window sets the pace from here
   run.collider.update_body(run.frame);
-  r.window_seam_gap_mm = 1e3 * double(run.sim.seam_gap_max());
+  r.window_seam_gap_mm = 1e3 * double(run.sim.seam_pair_gap_max());
   run.progress.plan(a.plan.frames * a.plan.steps);
   PhaseClock clock{run.sim};
   const CollideStats before = run.collider.stats();

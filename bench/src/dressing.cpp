@@ -54,8 +54,8 @@ void sew(const RunContext& run, RunResult& r) {
     const bool alive = sim.step();
     if (run.options.trace) r.sew_iteration_ms.push_back(float(iteration.ms()));
     if (!alive) break;
-    p.reached = sim.seam_gap_max() <= gap || sim.sewn_fraction() >= 1;
-    run.progress.report("sew: iteration %ld, seam gap %.1f mm", i + 1, 1e3 * double(sim.seam_gap_max()));
+    p.reached = sim.seam_pair_gap_max() <= gap || sim.sewn_fraction() >= 1;
+    run.progress.report("sew: iteration %ld, seam pairs within %.1f mm", i + 1, 1e3 * double(sim.seam_pair_gap_max()));
   }
   clock.finish(p);
 }

@@ -47,18 +47,19 @@ std::string describe_spring(const Simulator& sim, int s) {
   return text;
 }
 
-// the widest open seam pair: its vertices, their panels and the gap ("" when every pair is within 0.01 mm)
+// the widest opening along the seams: its vertices, their panels and the gap ("" when all are within 0.01 mm)
 std::string describe_seam_gap(const Simulator& sim) {
   const ClothMesh& mesh = sim.mesh();
-  const int widest = sim.widest_seam_pair();
-  if (widest < 0) return "";
-  const int a = mesh.seam_pairs(0, widest), b = mesh.seam_pairs(1, widest);
-  const Real gap = (sim.positions().col(a) - sim.positions().col(b)).norm();
-  if (!(gap > 1e-5f)) return "";
+  const SeamGap w = sim.widest_seam_gap();
+  if (w.vertex < 0 || !(w.gap > 1e-5f)) return "";
   const auto panel = [&](int v) { return mesh.panel_names[static_cast<std::size_t>(mesh.panel[static_cast<std::size_t>(v)])]; };
-  char text[200];
-  std::snprintf(text, sizeof text, "seam pair %d (vertices %d-%d, panels %s and %s), %.2f mm apart", widest, a, b,
-                panel(a).c_str(), panel(b).c_str(), 1e3 * double(gap));
+  char text[240];
+  if (w.loose)
+    std::snprintf(text, sizeof text, "vertex %d (panel %s, no partner) %.2f mm from its partner edge (panel %s, near vertex %d)",
+                  w.vertex, panel(w.vertex).c_str(), 1e3 * double(w.gap), panel(w.partner).c_str(), w.partner);
+  else
+    std::snprintf(text, sizeof text, "seam pair (vertices %d-%d, panels %s and %s), %.2f mm apart", w.vertex, w.partner,
+                  panel(w.vertex).c_str(), panel(w.partner).c_str(), 1e3 * double(w.gap));
   return text;
 }
 

@@ -171,6 +171,7 @@ nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const Meshed
           {"seams", static_cast<int>(pat.seams.size())},
           {"seam_pairs", static_cast<int>(m.mesh.seam_pairs.cols())},
           {"seam_offset_max_cm", seam_offsets(m)},
+          {"seam_unpaired", m.seam_loose_count},
           {"seam_edges", seam_edges(pat)},
           {"seam_warnings", seam_length_warnings(pat)},
           {"quads", static_cast<int>(m.mesh.quads.cols())},
@@ -199,10 +200,11 @@ void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern
     const Seam& seam = pat.seams[s];
     const Panel& a = pat.panels[static_cast<std::size_t>(seam.panel_a)];
     const Panel& b = pat.panels[static_cast<std::size_t>(seam.panel_b)];
-    std::printf("    %s (%.1f cm) <-> %s (%.1f cm)  %s, %d pairs, partners up to %.2f cm apart along the seam\n",
+    std::printf("    %s (%.1f cm) <-> %s (%.1f cm)  %s, %d pairs, %d without a partner, partners up to %.2f cm apart "
+                "along the seam\n",
                 edge_label(pat, seam.panel_a, seam.edge_a).c_str(), edge_length_cm(a, seam.edge_a),
                 edge_label(pat, seam.panel_b, seam.edge_b).c_str(), edge_length_cm(b, seam.edge_b),
-                seam.reversed ? "reversed" : "aligned", m.seam_pair_count[s], offsets[s]);
+                seam.reversed ? "reversed" : "aligned", m.seam_pair_count[s], m.seam_loose_count[s], offsets[s]);
   }
   for (const std::string& w : seam_length_warnings(pat)) std::fprintf(stderr, "clothbench garment: warning: %s\n", w.c_str());
   std::printf("  attached       %zu vertices\n", m.mesh.attached.size());

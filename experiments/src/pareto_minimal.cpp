@@ -379,7 +379,7 @@ void minimal(ExperimentContext& ctx) {
           num(kAccuracyLimits.inside_pct, 1) +
           " % of the vertices "
           "inside the body, no point deeper than " +
-          num(kAccuracyLimits.depth_mm, 0) + " mm, every seam pair closer than " + num(kAccuracyLimits.seam_gap_mm, 0) +
+          num(kAccuracyLimits.depth_mm, 0) + " mm, every seam closed to within " + num(kAccuracyLimits.seam_gap_mm, 0) +
           " mm, at most " + num(kAccuracyLimits.crossings_pct, 0) +
           " % of the structural springs crossing "
           "the body (the holes of dressing section 7). The papers chose their counts by eye. The dressing scenes "

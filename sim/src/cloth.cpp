@@ -51,6 +51,7 @@ void ClothMesh::append(const ClothMesh& o) {
   kind.insert(kind.end(), o.kind.begin(), o.kind.end());
   append_cols(quads, o.quads, shift);
   append_cols(seam_pairs, o.seam_pairs, shift);
+  append_cols(seam_loose, o.seam_loose, shift);
   for (auto p : o.panel) panel.push_back(p + panel_shift);
   panel_names.insert(panel_names.end(), o.panel_names.begin(), o.panel_names.end());
   for (auto a : o.attached) attached.push_back(a + shift);
@@ -67,7 +68,8 @@ void ClothMesh::validate(const std::string& what) const {
     fail("spring arrays differ in length");
   if (springs.cols() && !(rest_length.array() > 0).all()) fail("spring natural length must be > 0");
   auto in_range = [&](const auto& m) { return m.size() == 0 || (m.minCoeff() >= 0 && m.maxCoeff() < nv); };
-  if (!in_range(springs) || !in_range(quads) || !in_range(seam_pairs)) fail("vertex index out of range");
+  if (!in_range(springs) || !in_range(quads) || !in_range(seam_pairs) || !in_range(seam_loose))
+    fail("vertex index out of range");
   for (auto a : attached)
     if (a < 0 || a >= nv) fail("attached vertex index out of range");
 }
@@ -129,6 +131,7 @@ ClothMesh make_grid_cloth(int nx, int ny, Real spacing, const Vec3& origin, cons
   c.panel.assign(nv, 0);
   c.panel_names = {"grid"};
   c.seam_pairs.resize(2, 0);
+  c.seam_loose.resize(3, 0);
   return c;
 }
 

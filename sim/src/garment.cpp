@@ -25,6 +25,41 @@ Eigen::Matrix3f placement_rotation(const Placement& pl) {
       .toRotationMatrix();
 }
 
+// Seam pairs, and the vertices of sewn edges left without a partner, in the garment's vertex indices.
+void pair_seams(const Pattern& pat, const std::vector<PanelGrid>& grids, const std::vector<int>& offset,
+                MeshedPattern& out) {
+  std::vector<std::array<int, 2>> pairs;
+  std::vector<LooseVertex> loose;
+  for (const auto& s : pat.seams) {
+    const auto pa = static_cast<std::size_t>(s.panel_a), pb = static_cast<std::size_t>(s.panel_b);
+    const auto& ra = grids[pa].edge_vertices[static_cast<std::size_t>(s.edge_a)];
+    const auto& rb = grids[pb].edge_vertices[static_cast<std::size_t>(s.edge_b)];
+    std::set<int> paired_a, paired_b;
+    int count = 0;
+    for (const auto& pr : match_runs(ra, rb, s.reversed)) {
+      paired_a.insert(pr[0]), paired_b.insert(pr[1]);
+      const int a = pr[0] + offset[pa], b = pr[1] + offset[pb];
+      if (a == b) continue;  // a vertex never pairs with itself (the shared tip of a dart)
+      pairs.push_back({a, b});
+      out.seam_offset_cm.push_back(pair_offset_cm(pat, s, ra, rb, pr));
+      ++count;
+    }
+    out.seam_pair_count.push_back(count);
+    const std::size_t before = loose.size();
+    for (auto l : loose_vertices(ra, run_to_corners(pat.panels[pb], s.edge_b, grids[pb]), s.reversed, paired_a))
+      loose.push_back({l.v + offset[pa], l.b0 + offset[pb], l.b1 + offset[pb]});
+    for (auto l : loose_vertices(rb, run_to_corners(pat.panels[pa], s.edge_a, grids[pa]), s.reversed, paired_b))
+      loose.push_back({l.v + offset[pb], l.b0 + offset[pa], l.b1 + offset[pa]});
+    out.seam_loose_count.push_back(static_cast<int>(loose.size() - before));
+  }
+  out.mesh.seam_pairs.resize(2, static_cast<Eigen::Index>(pairs.size()));
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    out.mesh.seam_pairs.col(static_cast<Eigen::Index>(i)) << pairs[i][0], pairs[i][1];
+  out.mesh.seam_loose.resize(3, static_cast<Eigen::Index>(loose.size()));
+  for (std::size_t i = 0; i < loose.size(); ++i)
+    out.mesh.seam_loose.col(static_cast<Eigen::Index>(i)) << loose[i].v, loose[i].b0, loose[i].b1;
+}
+
 }  // namespace
 
 MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach) {
@@ -50,25 +85,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach) {
         for (const auto& [s, v] : grids[pi].edge_vertices[static_cast<std::size_t>(e)])
           out.mesh.attached.push_back(v + offset.back());
   }
-  std::vector<std::array<int, 2>> pairs;
-  for (const auto& s : pat.seams) {
-    const auto& ra = grids[static_cast<std::size_t>(s.panel_a)].edge_vertices[static_cast<std::size_t>(s.edge_a)];
-    const auto& rb = grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)];
-    // a vertex never pairs with itself (the shared tip of a dart)
-    int count = 0;
-    for (const auto& pr : match_runs(ra, rb, s.reversed)) {
-      const int a = pr[0] + offset[static_cast<std::size_t>(s.panel_a)],
-                b = pr[1] + offset[static_cast<std::size_t>(s.panel_b)];
-      if (a == b) continue;
-      pairs.push_back({a, b});
-      out.seam_offset_cm.push_back(pair_offset_cm(pat, s, ra, rb, pr));
-      ++count;
-    }
-    out.seam_pair_count.push_back(count);
-  }
-  out.mesh.seam_pairs.resize(2, static_cast<Eigen::Index>(pairs.size()));
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-    out.mesh.seam_pairs.col(static_cast<Eigen::Index>(i)) << pairs[i][0], pairs[i][1];
+  pair_seams(pat, grids, offset, out);
   out.mesh.validate("pattern " + pat.name);
   return out;
 }

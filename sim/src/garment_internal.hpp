@@ -3,6 +3,7 @@
 // grid (panel_grid.cpp) and the seam alignment (seam_alignment.cpp), put together by garment.cpp.
 #include <array>
 #include <cstdint>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -55,6 +56,17 @@ void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& g
 // from the shorter run never sews two neighbours of one panel onto one point.
 std::vector<std::array<int, 2>> match_runs(const std::vector<std::pair<double, int>>& a,
                                            const std::vector<std::pair<double, int>>& b, bool reversed);
+// Edge e's run, with the panel's vertex at either corner of the edge added where the run stops short of it.
+std::vector<std::pair<double, int>> run_to_corners(const Panel& p, int e, const PanelGrid& g);
+// A seam vertex without a partner vertex, and the two partner-edge vertices around its arc fraction.
+struct LooseVertex {
+  int v, b0, b1;
+};
+// The vertices of `run` that no pair names (`paired`), each with the two vertices of the partner run around
+// its arc fraction (1 - t when the seam is reversed; the partner's end vertex twice beyond its ends).
+std::vector<LooseVertex> loose_vertices(const std::vector<std::pair<double, int>>& run,
+                                        const std::vector<std::pair<double, int>>& partner, bool reversed,
+                                        const std::set<int>& paired);
 // How far apart along the seam the partners of a pair sit in the pattern [cm]: the difference of
 // their arc fractions (one reversed) times the mean length of the two edges.
 double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::pair<double, int>>& ra,

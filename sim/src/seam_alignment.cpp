@@ -225,6 +225,41 @@ std::vector<std::array<int, 2>> match_runs(const std::vector<std::pair<double, i
   return out;
 }
 
+std::vector<std::pair<double, int>> run_to_corners(const Panel& p, int e, const PanelGrid& g) {
+  auto run = g.edge_vertices[static_cast<std::size_t>(e)];
+  if (run.empty()) return run;
+  const auto corner = [&](double t) {  // the panel's vertex on the corner, if it has one
+    const Vec2d c = point_on_edge(p, e, t);
+    for (std::size_t v = 0; v < g.uv.size(); ++v)
+      if ((g.uv[v] - c).norm() < 1e-9) return static_cast<int>(v);
+    return -1;
+  };
+  if (!is_corner(run.front().first))
+    if (const int c = corner(0); c >= 0) run.insert(run.begin(), {0.0, c});
+  if (!is_corner(run.back().first))
+    if (const int c = corner(1); c >= 0) run.push_back({1.0, c});
+  return run;
+}
+
+std::vector<LooseVertex> loose_vertices(const std::vector<std::pair<double, int>>& run,
+                                        const std::vector<std::pair<double, int>>& partner, bool reversed,
+                                        const std::set<int>& paired) {
+  std::vector<LooseVertex> out;
+  if (partner.empty()) return out;
+  const std::size_t n = partner.size();
+  for (const auto& [t, v] : run) {
+    if (paired.count(v)) continue;
+    const double tp = reversed ? 1 - t : t;
+    // partner[j - 1] and partner[j] bracket tp (runs ascend in arc fraction)
+    const auto j = static_cast<std::size_t>(
+        std::upper_bound(partner.begin(), partner.end(), tp, [](double x, const auto& q) { return x < q.first; }) -
+        partner.begin());
+    const LooseVertex l{v, partner[j == 0 ? 0 : j - 1].second, partner[j == n ? n - 1 : j].second};
+    if (l.b0 != v && l.b1 != v) out.push_back(l);  // a dart's tip is on both of its edges
+  }
+  return out;
+}
+
 // How far apart along the seam the partners of a pair sit in the pattern [cm]: the difference of
 // their arc fractions (one reversed) times the mean length of the two edges.
 double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::pair<double, int>>& ra,

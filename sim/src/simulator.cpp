@@ -461,19 +461,42 @@ void Simulator::follow_attachments(const BodyFrame& body, Real time_before) {
   }
 }
 
-int Simulator::widest_seam_pair() const {
-  int widest = -1;
-  Real gap = -1;  // a NaN distance is never the widest
+namespace {
+
+Real distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const Real len2 = ab.squaredNorm();
+  const Real t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, Real(0), Real(1)) : Real(0);
+  return (p - (a + t * ab)).norm();
+}
+
+}  // namespace
+
+SeamGap Simulator::widest_seam_gap() const {
+  SeamGap widest;
+  widest.gap = -1;  // a NaN distance is never the widest
+  const auto consider = [&](Real d, int a, int b, bool loose) {
+    if (d > widest.gap) widest = {d, a, b, loose};
+  };
   for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
-    const Real d = (x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm();
-    if (d > gap) gap = d, widest = static_cast<int>(p);
+    const int a = mesh_.seam_pairs(0, p), b = mesh_.seam_pairs(1, p);
+    consider((x_.col(a) - x_.col(b)).norm(), a, b, false);
   }
+  for (Eigen::Index l = 0; l < mesh_.seam_loose.cols(); ++l) {
+    const int v = mesh_.seam_loose(0, l), b0 = mesh_.seam_loose(1, l), b1 = mesh_.seam_loose(2, l);
+    const Vec3 x = x_.col(v);
+    const int nearer = (x_.col(b0) - x).squaredNorm() <= (x_.col(b1) - x).squaredNorm() ? b0 : b1;
+    consider(distance_to_segment(x, x_.col(b0), x_.col(b1)), v, nearer, true);
+  }
+  if (widest.vertex < 0) widest.gap = 0;
   return widest;
 }
 
-Real Simulator::seam_gap_max() const {
-  const int p = widest_seam_pair();
-  return p < 0 ? Real(0) : (x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm();
+Real Simulator::seam_pair_gap_max() const {
+  Real gap = 0;
+  for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p)
+    gap = std::max(gap, (x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm());
+  return gap;
 }
 
 Real Simulator::sewn_fraction() const {

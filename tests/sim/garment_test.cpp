@@ -64,6 +64,39 @@ TEST(Garment, BoundaryOnOutlineAndSeamsMatched) {
   EXPECT_GT(m.mesh.quads.cols(), 0);
 }
 
+TEST(Garment, EverySeamVertexIsPairedOrHasItsSegmentOfPartnerEdge) {
+  // a back narrower than the front: its sides hold fewer vertices, so some of the front's have no partner
+  Pattern pat = two_panel(40, 50);
+  pat.panels[1] = rect("back", 40, 38);
+  const MeshedPattern m = mesh_pattern(pat, 2.3);
+  const auto& loose = m.mesh.seam_loose;
+  ASSERT_EQ(m.seam_loose_count.size(), 2u);
+  EXPECT_GT(m.seam_loose_count[0], 0);
+  EXPECT_EQ(loose.cols(), m.seam_loose_count[0] + m.seam_loose_count[1]);
+  const auto panel = [&](int v) { return m.mesh.panel[static_cast<std::size_t>(v)]; };
+  const auto is_paired = [&](int v) { return (m.mesh.seam_pairs.array() == v).any(); };
+  for (Eigen::Index l = 0; l < loose.cols(); ++l) {
+    const int v = loose(0, l), b0 = loose(1, l), b1 = loose(2, l);
+    EXPECT_FALSE(is_paired(v)) << v;
+    EXPECT_NE(panel(v), panel(b0));
+    EXPECT_EQ(panel(b0), panel(b1));
+    // in the pattern, the vertex's height up its side lies between its partner vertices' (as fractions of the sides:
+    // the seams run reversed, each pairing an upward edge with a downward one)
+    const auto up = [&](int u) { return m.uv(1, u) / (panel(u) == 0 ? 50.0 : 38.0); };
+    EXPECT_LE(std::min(up(b0), up(b1)) - 1e-9, up(v)) << v;
+    EXPECT_GE(std::max(up(b0), up(b1)) + 1e-9, up(v)) << v;
+  }
+  // every vertex on a sewn side is paired or listed without a partner
+  for (int v = 0; v < m.mesh.vertex_count(); ++v) {
+    const double u = m.uv(0, v), y = m.uv(1, v), h = panel(v) == 0 ? 50.0 : 38.0;
+    const bool on_side = m.boundary[static_cast<std::size_t>(v)] && (u < 1e-9 || u > 40 - 1e-9) && y > 1e-9 &&
+                         y < h - 1e-9;
+    if (on_side) {
+      EXPECT_TRUE(is_paired(v) || (loose.row(0).array() == v).any()) << "vertex " << v;
+    }
+  }
+}
+
 TEST(Garment, CellsCoverThePanelUpToItsOutline) {
   // a panel with a slanted side: the cells the outline cuts along it have three kept corners and
   // become triangles, so the cloth's area (its masses) and its faces reach the outline. With full

@@ -155,6 +155,47 @@ TEST(Simulator, SeamsCloseNoFasterThanTheirSpeed) {
   EXPECT_GT(fastest, 0.9 * p.seam_speed);
 }
 
+TEST(Simulator, TheSeamGapSeesAVertexWithoutAPartnerOffItsPartnerEdge) {
+  // panel A's edge 0-1-2 sewn to panel B's edge 3-4: pairs (0, 3) and (2, 4), vertex 1 without a partner, its
+  // stretch of partner edge 3-4; the pairs closed and vertex 1 bulging 5 mm off that stretch
+  ClothMesh c = test::two_particles(0.01f, 0);
+  c.positions.resize(3, 5);
+  c.positions << 0, 0.01f, 0.02f, 0, 0.02f,  //
+      0, 0.005f, 0, 0, 0,                    //
+      0, 0, 0, 0, 0;
+  c.vertex_area = Scalars::Constant(5, 1e-4f);
+  c.springs.resize(2, 0);
+  c.rest_length.resize(0);
+  c.kind.clear();
+  c.panel = {0, 0, 0, 1, 1};
+  c.panel_names = {"a", "b"};
+  c.seam_pairs.resize(2, 2);
+  c.seam_pairs << 0, 2, 3, 4;
+  c.seam_loose.resize(3, 1);
+  c.seam_loose << 1, 3, 4;
+  Simulator sim(c, Material{}, SolverParams{});
+  EXPECT_NEAR(sim.seam_pair_gap_max(), 0, 1e-7);
+  EXPECT_NEAR(sim.seam_gap_max(), 0.005, 1e-6);
+  const SeamGap w = sim.widest_seam_gap();
+  EXPECT_TRUE(w.loose);
+  EXPECT_EQ(w.vertex, 1);
+  EXPECT_TRUE(w.partner == 3 || w.partner == 4);
+  // on its stretch of partner edge, anywhere along it, the seam is closed
+  sim.positions().col(1) = Vec3(0.013f, 0, 0);
+  EXPECT_NEAR(sim.seam_gap_max(), 0, 1e-7);
+  // a pair apart by more is the widest
+  sim.positions().col(4) = Vec3(0.02f, 0, 0.008f);
+  EXPECT_FALSE(sim.widest_seam_gap().loose);
+  EXPECT_NEAR(sim.seam_gap_max(), 0.008, 1e-6);
+}
+
+TEST(ClothMesh, RejectsASeamVertexWithoutAPartnerOutOfRange) {
+  ClothMesh c = test::two_particles(0.01f, 0);
+  c.seam_loose.resize(3, 1);
+  c.seam_loose << 0, 1, 2;
+  EXPECT_THROW(c.validate("test"), std::invalid_argument);
+}
+
 TEST(Simulator, SeamsMeetingAtOnePointMoveAsOne) {
   // a sleeve, a front and a back meet at the armpit: pairs (0, 1) and (2, 1) chain, and once merged the
   // three vertices are one point with the mass-weighted mean velocity (momentum kept). Merging the pairs

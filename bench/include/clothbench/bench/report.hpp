@@ -24,7 +24,7 @@ struct AccuracyLimits {
   double inside_pct = 0.5;      ///< cloth points inside the body [%]
   double depth_mm = 5;          ///< deepest point inside the body [mm]
   double crossings_pct = 1;     ///< structural springs crossing the body [%]
-  double seam_gap_mm = 2;       ///< widest seam pair [mm]
+  double seam_gap_mm = 2;       ///< widest opening along the seams (Simulator::widest_seam_gap) [mm]
   double strain_excess = 0.01;  ///< strain above the super-elasticity threshold (runs with a limit)
 };
 inline constexpr AccuracyLimits kAccuracyLimits{};

@@ -68,16 +68,16 @@ struct RunResult {
   long prepared_frames =
       0;  ///< measured frames whose body the collider prepared on a second thread (body.prepare_ahead)
   Accuracy accuracy;            ///< vertices and (with face queries) quad midpoints, end state
-  double seam_gap_max_mm = 0;
+  double seam_gap_max_mm = 0;   ///< widest opening along the seams, pairs and vertices without a partner [mm]
   double strain_max = 0, strain_p99 = 0;
   double strain_over = 0;       ///< share of the structural springs over threshold + 1 %, fraction
   std::string strain_max_where; ///< the most strained structural spring: its ends, height, contacts, seams
-  std::string seam_gap_where;   ///< the widest open seam pair: its vertices and panels ("" when all are closed)
+  std::string seam_gap_where;   ///< the widest opening along the seams: its vertices and panels ("" when closed)
   std::string depth_max_where;  ///< measure_frames: the deepest vertex of the deepest frame: where, when, contact
   double kinetic_energy = 0;
   double animate_strain_max = 0;           ///< largest structural strain seen at any animation frame
   std::vector<FrameSample> frame_samples;  ///< RunOptions::measure_frames: every measured animation frame
-  double window_seam_gap_mm = 0;      ///< largest seam gap when the measured animation window starts [mm]
+  double window_seam_gap_mm = 0;      ///< largest seam pair gap when the measured animation window starts [mm]
   std::vector<float> sew_iteration_ms;  ///< wall time of every sew iteration (RunOptions::trace)
   bool converged = false;       ///< sewn (when sewing) and settled
   std::optional<Divergence> divergence;

@@ -23,6 +23,10 @@ struct ClothMesh {
   std::vector<SpringKind> kind; ///< kind per spring (ns)
   Quads quads;                  ///< grid cells, for face-body queries (4 x nq); a triangle repeats corner 2 as 3
   Pairs seam_pairs;             ///< vertex pairs to sew together (2 x np)
+  /// Seam vertices without a partner vertex (the edge with more vertices has some; 3 x nl): the vertex and
+  /// the two partner-edge vertices around its arc fraction (the same vertex twice beyond the partner edge's
+  /// last one). The seam is closed there when the vertex lies on the segment between those two.
+  Triples seam_loose;
   std::vector<std::int32_t> panel;   ///< panel index per vertex (nv)
   std::vector<std::string> panel_names;  ///< one per panel
   std::vector<std::int32_t> attached;    ///< vertices bound to the body (Durupinar 3.2)

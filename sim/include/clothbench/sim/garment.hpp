@@ -69,6 +69,7 @@ struct MeshedPattern {
   Eigen::Matrix2Xd uv;                 ///< pattern coordinates [cm] (2 x nv)
   std::vector<std::uint8_t> boundary;  ///< 1 for vertices placed on the outline (nv)
   std::vector<int> seam_pair_count;    ///< vertex pairs per seam
+  std::vector<int> seam_loose_count;   ///< per seam: vertices of its two edges without a partner
   std::vector<double> seam_offset_cm;  ///< per seam pair: its partners' distance along the seam [cm]
   double spacing_cm = 0;
 };

@@ -109,6 +109,15 @@ struct StrainStats {
   Real over = 0;        ///< share of the structural springs over the limits' strain (threshold + 1 %)
 };
 
+/// Where the seams are widest open: a seam pair's partners apart, or a seam vertex without a partner away
+/// from the segment of partner edge it belongs on (ClothMesh::seam_loose).
+struct SeamGap {
+  Real gap = 0;        ///< [m]
+  int vertex = -1;     ///< -1 when the mesh has no seams
+  int partner = -1;    ///< the pair's other vertex, or the nearer end of that segment
+  bool loose = false;  ///< `vertex` has no partner of its own
+};
+
 /// Cumulative per-phase timings [ms] and counts; CD&R and CS as in walking Table 1.
 struct SimTimings {
   double cdr_ms = 0;  ///< collision detection (collider query) and response
@@ -173,10 +182,13 @@ class Simulator {
   /// Quad midpoints of the current positions (3 x nq); what face queries test.
   const Points3& quad_midpoints() const { return mid_; }
 
-  /// Largest distance between seam pair partners [m] (0 when the mesh has no seams).
-  Real seam_gap_max() const;
-  /// The seam pair whose partners are farthest apart (-1 when the mesh has no seams).
-  int widest_seam_pair() const;
+  /// The widest opening along the seams, over every vertex of a sewn edge (paired or not).
+  SeamGap widest_seam_gap() const;
+  /// Its width [m] (0 when the mesh has no seams).
+  Real seam_gap_max() const { return widest_seam_gap().gap; }
+  /// Largest distance between seam pair partners [m]: what sewing waits on (a vertex without a partner
+  /// follows its neighbours).
+  Real seam_pair_gap_max() const;
   /// Share of seam pairs merged, 0..1.
   Real sewn_fraction() const;
   StrainStats strain() const;

@@ -13,6 +13,7 @@ using Points3 = Eigen::Matrix<Real, 3, Eigen::Dynamic>;  ///< packed xyz columns
 using Tris = Eigen::Matrix<std::int32_t, 3, Eigen::Dynamic>;  ///< triangle vertex indices (3 x nt)
 using Quads = Eigen::Matrix<std::int32_t, 4, Eigen::Dynamic>; ///< quad vertex indices, cyclic (4 x nq)
 using Pairs = Eigen::Matrix<std::int32_t, 2, Eigen::Dynamic>; ///< index pairs (2 x n)
+using Triples = Eigen::Matrix<std::int32_t, 3, Eigen::Dynamic>; ///< index triples (3 x n)
 using Scalars = Eigen::Matrix<Real, Eigen::Dynamic, 1>;       ///< one value per element (n)
 
 /// Standard gravity [m/s^2], along -Y (DESIGN.md: +Y up).
