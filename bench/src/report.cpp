@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "clothbench/config.h"
+#include "clothbench/bench/run_result_json.hpp"
 #include "clothbench/io/errors.hpp"
 
 namespace clothbench {
@@ -325,11 +326,12 @@ nlohmann::json result_document(const nlohmann::json& rows) {
 }
 
 nlohmann::json runs_document(const std::vector<RunResult>& runs, const std::string& name,
-                             const std::string& scene_path) {
+                             const std::string& scene_path, bool end_state) {
   std::vector<nlohmann::json> rows;
   for (const RunResult& r : runs) {
     rows.push_back(result_row(r, name));
     rows.back()["limit_misses"] = limit_misses(r);
+    if (end_state) put_end_state(rows.back(), r.mesh);
   }
   nlohmann::json doc = result_document(repetition_rows(rows));
   doc["context"]["scene"] = scene_path;

@@ -1,8 +1,11 @@
 // RunResult <-> JSON (run_result_json.hpp).
 #include "clothbench/bench/run_result_json.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
+
+#include "clothbench/io/errors.hpp"
 
 namespace clothbench {
 
@@ -80,13 +83,34 @@ nlohmann::json to_json(const RunResult& r, bool end_state) {
                        {"phase", static_cast<int>(r.divergence->phase)},
                        {"vertex", r.divergence->vertex},
                        {"reason", r.divergence->reason}};
-  if (end_state) {
-    const auto& x = r.mesh.positions;
-    const auto& q = r.mesh.quads;
-    j["end_positions"] = std::vector<float>(x.data(), x.data() + x.size());
-    j["end_quads"] = std::vector<std::int32_t>(q.data(), q.data() + q.size());
-  }
+  if (end_state) put_end_state(j, r.mesh);
   return j;
+}
+
+void put_end_state(nlohmann::json& j, const ClothMesh& mesh) {
+  const auto& x = mesh.positions;
+  const auto& q = mesh.quads;
+  j["end_positions"] = std::vector<float>(x.data(), x.data() + x.size());
+  j["end_quads"] = std::vector<std::int32_t>(q.data(), q.data() + q.size());
+}
+
+std::optional<ClothMesh> end_state_from_json(const nlohmann::json& j) {
+  if (!j.contains("end_positions")) return std::nullopt;
+  std::vector<float> x;
+  std::vector<std::int32_t> q;
+  try {
+    x = j["end_positions"].get<std::vector<float>>();
+    q = j.at("end_quads").get<std::vector<std::int32_t>>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(std::string("end state: ") + e.what());
+  }
+  const auto nv = static_cast<std::int32_t>(x.size() / 3);
+  if (x.size() % 3 || q.size() % 4 || std::any_of(q.begin(), q.end(), [&](std::int32_t v) { return v < 0 || v >= nv; }))
+    throw InputError("end state: end_positions is not 3 per vertex, or end_quads not 4 vertex indices per quad");
+  ClothMesh m;
+  m.positions = Eigen::Map<const Points3>(x.data(), 3, nv);
+  m.quads = Eigen::Map<const Quads>(q.data(), 4, static_cast<Eigen::Index>(q.size() / 4));
+  return m;
 }
 
 RunResult run_result_from_json(const nlohmann::json& j) {
@@ -102,12 +126,7 @@ RunResult run_result_from_json(const nlohmann::json& j) {
     r.divergence = Divergence{d.at("iteration").get<long>(), static_cast<Phase>(d.at("phase").get<int>()),
                               d.at("vertex").get<int>(), d.at("reason").get<std::string>()};
   }
-  if (j.contains("end_positions")) {
-    const auto x = j["end_positions"].get<std::vector<float>>();
-    const auto q = j.at("end_quads").get<std::vector<std::int32_t>>();
-    r.mesh.positions = Eigen::Map<const Points3>(x.data(), 3, static_cast<Eigen::Index>(x.size() / 3));
-    r.mesh.quads = Eigen::Map<const Quads>(q.data(), 4, static_cast<Eigen::Index>(q.size() / 4));
-  }
+  if (auto end = end_state_from_json(j)) r.mesh = std::move(*end);
   return r;
 }
 

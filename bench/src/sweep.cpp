@@ -48,7 +48,7 @@ SweepAxis parse_axis(const std::string& arg) {
 nlohmann::json SweepGrid::to_json() const {
   nlohmann::json ax = nlohmann::json::array();
   for (const auto& a : axes) ax.push_back({{"key", a.key}, {"values", a.values}});
-  return {{"scene", scene}, {"colliders", colliders}, {"axes", ax}, {"repetitions", repetitions}};
+  return {{"scene", scene}, {"colliders", colliders}, {"axes", ax}, {"repetitions", repetitions}, {"end_state", end_state}};
 }
 
 SweepGrid SweepGrid::from_json(const nlohmann::json& j) {
@@ -57,6 +57,7 @@ SweepGrid SweepGrid::from_json(const nlohmann::json& j) {
   g.colliders = j.at("colliders").get<std::vector<std::string>>();
   for (const auto& a : j.at("axes")) g.axes.push_back({a.at("key"), a.at("values").get<std::vector<std::string>>()});
   g.repetitions = j.at("repetitions").get<int>();
+  g.end_state = j.value("end_state", false);
   return g;
 }
 
@@ -160,7 +161,7 @@ void run_point(const SweepGrid& grid, const SweepPoint& p, const std::string& di
   options.progress = false;
   std::vector<RunResult> runs;
   for (int r = 0; r < grid.repetitions; ++r) runs.push_back(run_scene(scene, options));
-  nlohmann::json doc = runs_document(runs, scene.name + "/" + p.name, grid.scene);
+  nlohmann::json doc = runs_document(runs, scene.name + "/" + p.name, grid.scene, grid.end_state);
   doc["point"] = point_json(p);
   fs::remove(point_error_path(dir, p));
   write_text_file(point_path(dir, p), doc.dump(1) + "\n");

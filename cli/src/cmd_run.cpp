@@ -1,5 +1,5 @@
 // clothbench run SCENE [--collider NAME] [--set key=value]... [--json FILE] [--png FILE] [--gltf FILE] [--quiet]
-//                 [--strict] [--estimate] [--every-frame] [--repetitions N]
+//                 [--strict] [--estimate] [--every-frame] [--repetitions N] [--end-state]
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -19,7 +19,7 @@ namespace {
 struct RunArgs {
   std::string scene, collider, json, png, gltf;
   std::vector<std::string> sets;
-  bool quiet = false, strict = false, estimate = false, every_frame = false;
+  bool quiet = false, strict = false, estimate = false, every_frame = false, end_state = false;
   int repetitions = 1;
 };
 
@@ -43,7 +43,7 @@ void print_verdict(const RunResult& r) {
 
 // the runs' JSON (runs_document) with the --set overrides in its context
 nlohmann::json run_document(const RunArgs& a, const Scene& scene, const std::vector<RunResult>& runs) {
-  nlohmann::json doc = runs_document(runs, scene.name + "/" + scene.collider, a.scene);
+  nlohmann::json doc = runs_document(runs, scene.name + "/" + scene.collider, a.scene, a.end_state);
   doc["context"]["overrides"] = a.sets;
   return doc;
 }
@@ -167,6 +167,8 @@ void add_run_command(CLI::App& app, Action& action) {
   cmd->add_option("--collider", args->collider, "collider name (see `clothbench colliders`)");
   cmd->add_option("--set", args->sets, "override a scene field: section.key=value (repeatable)");
   cmd->add_option("--json", args->json, "write the result as JSON (Google Benchmark layout)");
+  cmd->add_flag("--end-state", args->end_state,
+                "--json: keep the cloth at its end in each row, as a reference or a run for `report --reference`");
   cmd->add_option("--png", args->png, "write a picture of the dressed body (front, side, back)");
   cmd->add_option("--gltf", args->gltf, "export the dressed body as binary glTF (.glb): the end state, or for a moving body the animation (morph targets, at most 16 frames kept); cloth vertices carry _STRAIN and _DISTANCE");
   cmd->add_flag("--quiet", args->quiet, "no progress lines on stderr");

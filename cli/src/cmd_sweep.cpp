@@ -1,4 +1,4 @@
-// clothbench sweep SCENE [--collider a,b] [--set key=v1,v2]... [--repetitions N] --out DIR
+// clothbench sweep SCENE [--collider a,b] [--set key=v1,v2]... [--repetitions N] [--end-state] --out DIR
 //                  [--jobs N | --shard i/N | --slurm [--partition P] [--time T] [--tasks K] [--no-wait]]
 // clothbench merge DIR... --out FILE [--allow-mixed]
 // Every point runs in a child process of its own (fork, no exec), so a crash or a bad value fails that
@@ -29,7 +29,7 @@ struct SweepArgs {
   std::string colliders;
   std::vector<std::string> sets;
   int repetitions = 1, jobs = 0, tasks = 0;
-  bool slurm = false, no_wait = false;
+  bool slurm = false, no_wait = false, end_state = false;
 };
 
 // the child's work: one point, its failure written where merge finds it
@@ -93,7 +93,8 @@ std::string grid_arguments(const SweepGrid& g, const std::string& dir) {
     for (const auto& v : axis.values) values += (values.empty() ? "" : ",") + v;
     a += " --set " + shell_quote(axis.key + "=" + values);
   }
-  return a + " --repetitions " + std::to_string(g.repetitions) + " --out " + shell_quote(fs::absolute(dir).string());
+  return a + " --repetitions " + std::to_string(g.repetitions) + (g.end_state ? " --end-state" : "") + " --out " +
+         shell_quote(fs::absolute(dir).string());
 }
 
 // a command's output; a failing command is an error quoting it
@@ -136,6 +137,7 @@ int sweep(const SweepArgs& a) {
   SweepGrid grid;
   grid.scene = fs::absolute(a.scene).lexically_normal().string();  // shards may start elsewhere
   grid.repetitions = a.repetitions;
+  grid.end_state = a.end_state;
   if (!a.colliders.empty()) grid.colliders = parse_axis("collider=" + a.colliders).values;
   for (const auto& s : a.sets) grid.axes.push_back(parse_axis(s));
   load_scene(grid.scene);  // a bad scene file fails the sweep, a bad value only its points
@@ -177,6 +179,8 @@ void add_sweep_command(CLI::App& app, Action& action) {
   cmd->add_option("--set", a->sets, "section.key=v1,v2,...: an axis of the grid (repeatable)");
   cmd->add_option("--repetitions", a->repetitions, "runs per point")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--out", a->out, "the sweep's folder (points/, sweep.json, merged.json)")->required();
+  cmd->add_flag("--end-state", a->end_state,
+                "keep each run's cloth at its end in its row, so that `report --reference` measures the drape error");
   cmd->add_option("--jobs", a->jobs, "worker processes at once (default: the cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--shard", a->shard, "i/N: run only points i, i + N, ... (for any scheduler)");
   cmd->add_flag("--slurm", a->slurm, "submit an sbatch job array (task k runs shard k), wait, merge");

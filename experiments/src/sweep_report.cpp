@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
+#include "clothbench/bench/drape_error.hpp"
 #include "clothbench/bench/report.hpp"
+#include "clothbench/bench/run_result_json.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/html_report.hpp"
 #include "clothbench/experiments/markdown_table.hpp"
@@ -134,49 +137,48 @@ std::vector<ReportConfiguration> report_configurations(const nlohmann::json& doc
   return out;
 }
 
-std::size_t write_sweep_report(const nlohmann::json& doc, const std::string& source, const std::string& out) {
-  const std::vector<ReportConfiguration> configs = report_configurations(doc);
-  MarkdownTable t({"configuration", "collider", "vertices", "runs", "ms/iteration (median)", "spread [%]", "total [s]",
-                   "frames/s", "inside [%]", "depth max [mm]", "crossings [%]", "seam gap [mm]", "strain max [%]",
-                   "meets the limits"});
+ReportReference report_reference(const nlohmann::json& doc, const std::string& path) {
+  if (doc.is_object() && doc.contains("benchmarks") && doc["benchmarks"].is_array())
+    for (const auto& row : doc["benchmarks"])
+      if (auto cloth = end_state_from_json(row)) return {std::move(*cloth), text(row, "name") + " (" + path + ")"};
+  throw InputError(path + ": no row carries its cloth's end state (write the reference with run --json FILE "
+                   "--end-state)");
+}
+
+namespace {
+
+// the median row's drape error against the reference [mm], when it carries its end state (false otherwise)
+bool add_drape_error(nlohmann::json& row, const ReportReference& reference) {
+  const std::optional<ClothMesh> cloth = end_state_from_json(row);
+  if (!cloth) return false;
+  const DrapeError e = drape_error(*cloth, reference.cloth);
+  row["drape_error_rms_mm"] = 1e3 * e.rms;
+  row["drape_error_max_mm"] = 1e3 * e.max;
+  return true;
+}
+
+std::vector<Chart> accuracy_charts(bool drape) {
   std::vector<Chart> charts{
-      {"sweep-inside",
-       "inside the body [%] (worst frame)",
-       [](const nlohmann::json& r) { return worst(r, "inside_pct", "worst_frame_inside_pct"); },
-       {}},
-      {"sweep-crossings",
-       "structural springs crossing the body [%] (worst frame)",
-       [](const nlohmann::json& r) { return worst(r, "crossings_pct", "worst_frame_crossings_pct"); },
-       {}},
-      {"sweep-strain",
-       "largest structural strain [%] (worst frame)",
-       [](const nlohmann::json& r) { return worst(r, "strain_max", "worst_frame_strain_max", 100); },
-       {}}};
-  nlohmann::json medians = nlohmann::json::array();
-  for (const auto& c : configs) {
-    const nlohmann::json& r = c.median;
-    medians.push_back(r);
-    const bool div = diverged(r);
-    const auto figure = [&](double v, int digits) { return div ? std::string("-") : num(v, digits); };
-    t.row({c.label, text(r, "collider"), num(field(r, "vertices"), 0), std::to_string(c.runs), num(ms(r), 3),
-           c.runs > 1 ? num(c.spread_pct, 1) : "-", num(field(r, "total_s"), 3),
-           r.contains("fps") ? num(field(r, "fps"), 1) : "-", figure(charts[0].value(r), 2),
-           figure(worst(r, "depth_max_mm", "worst_frame_depth_max_mm"), 1), figure(charts[1].value(r), 2),
-           figure(field(r, "seam_gap_max_mm"), 1), figure(charts[2].value(r), 1), verdict(r)});
-    if (div) continue;
-    for (Chart& ch : charts) {
-      auto& [x, y] = ch.points[text(r, "collider")];
-      x.push_back(ms(r));
-      y.push_back(ch.value(r));
-    }
-  }
-  const std::size_t failed = doc.contains("failed") && doc["failed"].is_array() ? doc["failed"].size() : 0;
-  // a log time axis only where the times span a decade: over a narrower range its labels run together
+      {"sweep-inside", "inside the body [%] (worst frame)",
+       [](const nlohmann::json& r) { return worst(r, "inside_pct", "worst_frame_inside_pct"); }, {}},
+      {"sweep-crossings", "structural springs crossing the body [%] (worst frame)",
+       [](const nlohmann::json& r) { return worst(r, "crossings_pct", "worst_frame_crossings_pct"); }, {}},
+      {"sweep-strain", "largest structural strain [%] (worst frame)",
+       [](const nlohmann::json& r) { return worst(r, "strain_max", "worst_frame_strain_max", 100); }, {}}};
+  if (drape)
+    charts.push_back({"sweep-drape-error", "drape error against the reference, RMS [mm]",
+                      [](const nlohmann::json& r) { return field(r, "drape_error_rms_mm"); }, {}});
+  return charts;
+}
+
+// the charts as pictures, time on a log axis only where the times span a decade (over a narrower range its labels
+// run together); the page's links to them
+std::string draw_charts(const std::vector<Chart>& charts, const std::vector<ReportConfiguration>& configs,
+                        ExperimentContext& ctx) {
   double lo = 0, hi = 0;
   for (const auto& c : configs)
     if (!diverged(c.median)) lo = lo > 0 ? std::min(lo, ms(c.median)) : ms(c.median), hi = std::max(hi, ms(c.median));
   const bool logx = lo > 0 && hi > 10 * lo;
-  ExperimentContext ctx(out, false, 1);  // for its charts
   std::string pictures;
   for (const Chart& ch : charts) {
     nlohmann::json series = nlohmann::json::array();
@@ -189,11 +191,79 @@ std::size_t write_sweep_report(const nlohmann::json& doc, const std::string& sou
                                                {"series", series}}))
       pictures += "![" + std::string(ch.name) + "](" + ch.name + ".png) ";
   }
+  return pictures;
+}
+
+// the summary's line on the drape error: the reference, the closest configuration, those without an end state
+std::string drape_line(const std::vector<ReportConfiguration>& configs, const ReportReference& reference,
+                       std::size_t without) {
+  const ReportConfiguration* closest = nullptr;
+  for (const auto& c : configs)
+    if (c.median.contains("drape_error_rms_mm") && !diverged(c.median) &&
+        (!closest || field(c.median, "drape_error_rms_mm") < field(closest->median, "drape_error_rms_mm")))
+      closest = &c;
+  std::string line = "Drape error against the reference " + reference.name +
+                     " (the symmetric vertex-to-surface distance of the two end states): ";
+  line += closest ? "the closest is " + closest->label + ", RMS " + num(field(closest->median, "drape_error_rms_mm"), 2) +
+                        " mm, max " + num(field(closest->median, "drape_error_max_mm"), 1) + " mm"
+                  : "no configuration carries its end state";
+  if (closest && without)
+    line += "; " + std::to_string(without) + (without == 1 ? " configuration carries" : " configurations carry") +
+            " no end state (run or sweep with --end-state)";
+  return line + ".";
+}
+
+}  // namespace
+
+std::size_t write_sweep_report(const nlohmann::json& doc, const std::string& source, const std::string& out,
+                               const ReportReference* reference) {
+  std::vector<ReportConfiguration> configs = report_configurations(doc);
+  std::vector<std::string> header{"configuration", "collider", "vertices", "runs", "ms/iteration (median)",
+                                  "spread [%]", "total [s]", "frames/s", "inside [%]", "depth max [mm]",
+                                  "crossings [%]", "seam gap [mm]", "strain max [%]"};
+  if (reference) header.push_back("drape error RMS / max [mm]");
+  header.push_back("meets the limits");
+  MarkdownTable t(header);
+  std::vector<Chart> charts = accuracy_charts(reference != nullptr);
+  nlohmann::json medians = nlohmann::json::array();
+  std::size_t without_end_state = 0;
+  for (auto& c : configs) {
+    nlohmann::json& r = c.median;
+    const bool div = diverged(r), drape = reference && add_drape_error(r, *reference);
+    without_end_state += reference && !drape;
+    const auto figure = [&](double v, int digits) { return div ? std::string("-") : num(v, digits); };
+    std::vector<std::string> cells{c.label, text(r, "collider"), num(field(r, "vertices"), 0), std::to_string(c.runs),
+                                   num(ms(r), 3), c.runs > 1 ? num(c.spread_pct, 1) : "-", num(field(r, "total_s"), 3),
+                                   r.contains("fps") ? num(field(r, "fps"), 1) : "-", figure(charts[0].value(r), 2),
+                                   figure(worst(r, "depth_max_mm", "worst_frame_depth_max_mm"), 1),
+                                   figure(charts[1].value(r), 2), figure(field(r, "seam_gap_max_mm"), 1),
+                                   figure(charts[2].value(r), 1)};
+    if (reference)
+      cells.push_back(drape && !div ? num(field(r, "drape_error_rms_mm"), 2) + " / " +
+                                          num(field(r, "drape_error_max_mm"), 1)
+                                    : "-");
+    cells.push_back(verdict(r));
+    t.row(cells);
+    medians.push_back(r);
+    medians.back().erase("end_positions");
+    medians.back().erase("end_quads");
+    if (div) continue;
+    for (Chart& ch : charts) {
+      if (ch.name == std::string("sweep-drape-error") && !drape) continue;
+      auto& [x, y] = ch.points[text(r, "collider")];
+      x.push_back(ms(r));
+      y.push_back(ch.value(r));
+    }
+  }
+  const std::size_t failed = doc.contains("failed") && doc["failed"].is_array() ? doc["failed"].size() : 0;
+  ExperimentContext ctx(out, false, 1);  // for its charts
+  const std::string pictures = draw_charts(charts, configs, ctx);
+  std::vector<std::string> lines = summary(configs, source, failed);
+  if (reference) lines.insert(lines.end() - 1, drape_line(configs, *reference, without_end_state));
   const AccuracyLimits& l = kAccuracyLimits;
   const nlohmann::json context = doc.value("context", nlohmann::json::object());
-  std::string md = "# sweep: Report of " + source + "\n\n" + markdown_summary(summary(configs, source, failed)) +
-                   "Written by `clothbench report " + source +
-                   "`; the runs' machine and build, from the document: " + text(context, "cpu_model") + ", " +
+  std::string md = "# sweep: Report of " + source + "\n\n" + markdown_summary(lines) + "Written by `clothbench report " +
+                   source + "`; the runs' machine and build, from the document: " + text(context, "cpu_model") + ", " +
                    num(field(context, "num_cpus"), 0) + " cores; git " + text(context, "git_sha") + "; " +
                    text(context, "date") +
                    ".\n\nOne row per configuration: the run with the median time per iteration among its runs, spread "

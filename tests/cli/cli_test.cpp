@@ -501,6 +501,50 @@ TEST_F(Cli, ReportOfAUsersSweepOpensWithItsSummaryAndKeepsEachConfiguration) {
   EXPECT_NE(read(log).find("no run rows"), std::string::npos) << read(log);
 }
 
+// given a reference drape (run --json --end-state), report measures every configuration swept with --end-state
+// against it: the reference's own configuration is 0 away, the others are not; a reference file without an end state
+// is bad input, and a sweep without end states says so in place of the figures
+TEST_F(Cli, ReportMeasuresTheDrapeErrorAgainstAReferenceDrape) {
+  if (!fs::exists(clothbench::kDebianHumanBody)) GTEST_SKIP() << clothbench::kDebianHumanBody << " missing";
+  const auto file = [&](const std::string& name) { return (dir_ / name).string(); };
+  const std::string sweep = file("sweep"), report = file("report"), ref = file("ref.json"), log = file("log");
+  const std::string scene = kScenes + "dressing/skirt.toml", short_run = " --set stop.max_iterations=40";
+  ASSERT_EQ(clothbench("run --quiet " + scene + " --collider embree --set garment.vertices=160" + short_run +
+                           " --end-state --json " + ref,
+                       log),
+            0)
+      << read(log);
+  ASSERT_EQ(clothbench("sweep " + scene + " --collider is-cpu,embree --set garment.vertices=100,160" + short_run +
+                           " --end-state --jobs 2 --out " + sweep,
+                       log),
+            0)
+      << read(log);
+  ASSERT_EQ(clothbench("report " + sweep + " --reference " + ref + " --out " + report, log), 0) << read(log);
+  const std::string md = read(report + "/sweep.md");
+  EXPECT_NE(md.find("drape error RMS / max [mm]"), std::string::npos) << md;
+  EXPECT_NE(md.find("Drape error against the reference"), std::string::npos) << md;
+  EXPECT_TRUE(fs::exists(report + "/sweep-drape-error.png"));
+  const auto doc = nlohmann::json::parse(read(report + "/sweep.json"));
+  ASSERT_EQ(doc["benchmarks"].size(), 4u);
+  for (const auto& row : doc["benchmarks"]) {
+    const std::string name = row["name"];
+    ASSERT_TRUE(row.contains("drape_error_rms_mm")) << name;
+    EXPECT_FALSE(row.contains("end_positions")) << name;
+    if (name.find("embree/garment.vertices=160") != std::string::npos)
+      EXPECT_EQ(row["drape_error_max_mm"].get<double>(), 0.0) << name;
+    else
+      EXPECT_GT(row["drape_error_rms_mm"].get<double>(), 0.0) << name;
+  }
+  // a reference that carries no end state; a sweep without end states
+  const std::string plain = file("plain.json"), plain_sweep = file("plain-sweep");
+  ASSERT_EQ(clothbench("run --quiet " + scene + " --set garment.vertices=100" + short_run + " --json " + plain, log), 0);
+  EXPECT_EQ(clothbench("report " + sweep + " --reference " + plain + " --out " + report, log), 2);
+  EXPECT_NE(read(log).find("no row carries its cloth's end state"), std::string::npos) << read(log);
+  ASSERT_EQ(clothbench("report " + plain + " --reference " + ref + " --out " + report, log), 0) << read(log);
+  EXPECT_NE(read(report + "/sweep.md").find("no configuration carries its end state"), std::string::npos)
+      << read(report + "/sweep.md");
+}
+
 // the shipped rest body written again as a user's scan might come: vertex x, y, z mapped by `f`
 void rewrite_body(const std::string& out, Eigen::Matrix3d f) {
   std::ifstream in(clothbench::data_path("body/mh_female_walk_rest.obj"));

@@ -66,9 +66,10 @@ nlohmann::json result_document(const nlohmann::json& rows);
 
 /// The document of one configuration's runs named `name`: every run's row with its limit_misses (and the
 /// aggregates of repetition_rows when there are several), the context naming the scene file and the
-/// configuration's hash.
+/// configuration's hash; with `end_state`, each run's row carries the cloth's end state too (put_end_state), for
+/// `report --reference`.
 nlohmann::json runs_document(const std::vector<RunResult>& runs, const std::string& name,
-                             const std::string& scene_path);
+                             const std::string& scene_path, bool end_state = false);
 
 /// The JSON of a file; InputError naming the path when it cannot be opened or is not JSON.
 nlohmann::json read_json_file(const std::string& path);

@@ -22,6 +22,7 @@ struct SweepGrid {
   std::vector<std::string> colliders;  ///< empty: the scene's own
   std::vector<SweepAxis> axes;
   int repetitions = 1;
+  bool end_state = false;  ///< every run's row carries the cloth's end state (report --reference)
   nlohmann::json to_json() const;
   static SweepGrid from_json(const nlohmann::json& j);
 };

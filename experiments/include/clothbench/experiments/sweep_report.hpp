@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "clothbench/sim/cloth.hpp"
+
 namespace clothbench {
 
 /// One configuration of a document: its rows (every repetition), the run with the median time among them.
@@ -22,9 +24,22 @@ struct ReportConfiguration {
 /// Throws InputError when `doc` has no "benchmarks" array or no run row.
 std::vector<ReportConfiguration> report_configurations(const nlohmann::json& doc);
 
-/// Writes OUT/sweep.md (summary, table, failed points), OUT/sweep.json (the median rows), the charts
-/// OUT/sweep-{inside,crossings,strain}.png and OUT/index.html; `source` names the input on the page. Returns the
-/// number of configurations.
-std::size_t write_sweep_report(const nlohmann::json& doc, const std::string& source, const std::string& out);
+/// A reference drape for the drape error (bench/drape_error.hpp): its cloth at the end, and what the page calls it.
+struct ReportReference {
+  ClothMesh cloth;
+  std::string name;
+};
+
+/// The reference in a results document (run --json --end-state's): the first run row that carries its end state.
+/// Throws InputError naming `path` when no row does.
+ReportReference report_reference(const nlohmann::json& doc, const std::string& path);
+
+/// Writes OUT/sweep.md (summary, table, failed points), OUT/sweep.json (the median rows, without end states), the
+/// charts OUT/sweep-{inside,crossings,strain}.png and OUT/index.html; `source` names the input on the page. With a
+/// `reference`, every configuration whose median row carries its end state (--end-state) gets its drape error
+/// against it: a column, the median row's drape_error_rms_mm and drape_error_max_mm, and the chart
+/// OUT/sweep-drape-error.png. Returns the number of configurations.
+std::size_t write_sweep_report(const nlohmann::json& doc, const std::string& source, const std::string& out,
+                               const ReportReference* reference = nullptr);
 
 }  // namespace clothbench
