@@ -41,6 +41,10 @@ struct PanelGrid {
 
 // the panel's grid at spacing h: nodes inside the outline, the ring around them snapped onto it
 PanelGrid grid_panel(const Panel& p, double h);
+// A new boundary vertex at pattern point `at` on the outline between boundary neighbours u and w: the cell
+// that joins them is cut into a triangle and the rest, their spring split in two, and the new vertex joined
+// across the cell (where no cell joins them, the triangle u, new, w). Returns its index.
+int split_boundary_edge(PanelGrid& g, int u, int w, const Vec2d& at);
 // The panel's cloth from its final uv: positions (u, v, 0) [m], rest lengths from the pattern,
 // a quarter of each adjacent cell's area per vertex.
 ClothMesh panel_mesh(const Panel& p, const PanelGrid& g, double h);

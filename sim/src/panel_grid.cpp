@@ -129,6 +129,66 @@ PanelGrid grid_panel(const Panel& p, double h) {
   return g;
 }
 
+namespace {
+
+void add_spring(PanelGrid& g, int a, int b, SpringKind kind) {
+  g.springs.push_back({a, b});
+  g.kinds.push_back(kind);
+}
+
+// The cell with u and w as neighbouring corners, and where u or w stands in it (-1 when none has them).
+std::pair<int, std::size_t> cell_joining(const PanelGrid& g, int u, int w) {
+  for (std::size_t c = 0; c < g.quads.size(); ++c) {
+    const auto& q = g.quads[c];
+    const std::size_t corners = q[3] == q[2] ? 3 : 4;
+    for (std::size_t i = 0; i < corners; ++i) {
+      const int a = q[i], b = q[(i + 1) % corners];
+      if ((a == u && b == w) || (a == w && b == u)) return {static_cast<int>(c), i};
+    }
+  }
+  return {-1, 0};
+}
+
+}  // namespace
+
+int split_boundary_edge(PanelGrid& g, int u, int w, const Vec2d& at) {
+  const int x = static_cast<int>(g.uv.size());
+  g.uv.push_back(at);
+  g.boundary.push_back(1);
+  const auto [c, i] = cell_joining(g, u, w);
+  if (c < 0) {
+    // no cell joins them (a strap one cell wide, a corner cut off): the triangle u x w of the outline,
+    // turning the way the grid's cells do
+    const Vec2d pu = g.uv[static_cast<std::size_t>(u)], pw = g.uv[static_cast<std::size_t>(w)];
+    const bool ccw = cross(at - pu, pw - pu) > 0;
+    g.quads.push_back(ccw ? std::array<int, 4>{u, x, w, w} : std::array<int, 4>{w, x, u, u});
+    add_spring(g, u, x, SpringKind::kStructural);
+    add_spring(g, x, w, SpringKind::kStructural);
+    return x;
+  }
+  const std::array<int, 4> q = g.quads[static_cast<std::size_t>(c)];
+  const std::size_t corners = q[3] == q[2] ? 3 : 4;
+  std::array<int, 4> ring{};  // the cell's corners from the second of the pair round to the first
+  for (std::size_t k = 0; k < corners; ++k) ring[k] = q[(i + 1 + k) % corners];
+  // the polygon a x b c (d) becomes the triangle a x (d or c) and the cell x b c (d)
+  const int a = q[i], before_a = ring[corners - 2];
+  g.quads[static_cast<std::size_t>(c)] = {x, ring[0], ring[1], corners == 4 ? ring[2] : ring[1]};
+  g.quads.push_back({a, x, before_a, before_a});
+  const auto s = std::find_if(g.springs.begin(), g.springs.end(), [&](const std::array<int, 2>& e) {
+    return (e[0] == u && e[1] == w) || (e[0] == w && e[1] == u);
+  });
+  if (s != g.springs.end()) {
+    const SpringKind kind = g.kinds[static_cast<std::size_t>(s - g.springs.begin())];
+    *s = {u, x};
+    add_spring(g, x, w, kind);
+  } else {
+    add_spring(g, u, x, SpringKind::kStructural);
+    add_spring(g, x, w, SpringKind::kStructural);
+  }
+  for (std::size_t k = 1; k + 1 < corners; ++k) add_spring(g, x, ring[k], SpringKind::kShear);
+  return x;
+}
+
 // The panel's cloth from its final uv: positions (u, v, 0) [m], rest lengths from the pattern,
 // a quarter of each adjacent cell's area per vertex.
 ClothMesh panel_mesh(const Panel& p, const PanelGrid& g, double h) {

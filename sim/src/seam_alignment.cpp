@@ -160,6 +160,69 @@ void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<Pan
   }
 }
 
+// Edge e's run with the vertices that bound it on the outline: the panel's vertex on a corner of the edge, or
+// else the nearest vertex of the edge meeting it there that is not on the run, at fraction 0 or 1.
+std::vector<std::pair<double, int>> bracketing_run(const Panel& p, int e, const PanelGrid& g) {
+  auto run = run_to_corners(p, e, g);
+  const auto on_run = [&](int v) {
+    return std::any_of(run.begin(), run.end(), [&](const auto& q) { return q.second == v; });
+  };
+  for (const double t : {0.0, 1.0}) {
+    const int next = edge_at_corner(p, e, t);
+    if (run.empty() || std::abs((t > 0.5 ? run.back() : run.front()).first - t) < 1e-9 || next < 0) continue;
+    auto nr = g.edge_vertices[static_cast<std::size_t>(next)];  // from the corner away
+    if (t < 0.5) std::reverse(nr.begin(), nr.end());
+    const auto v = std::find_if(nr.begin(), nr.end(), [&](const auto& q) { return !on_run(q.second); });
+    if (v != nr.end()) run.insert(t > 0.5 ? run.end() : run.begin(), {t, v->second});
+  }
+  return run;
+}
+
+// Where the two runs of a seam differ in count, the shorter gets a new vertex at the arc fraction of each
+// vertex of the longer that the matching of the two leaves without a partner, between its neighbours on the
+// shorter edge (a vertex without a partner stands off the seam: sewing pulls pairs). An edge an earlier seam
+// placed keeps its vertices.
+void even_out_runs(const Pattern& pat, const Seam& s, std::vector<PanelGrid>& grids,
+                   const std::set<std::pair<int, int>>& locked) {
+  const auto& ra = grids[static_cast<std::size_t>(s.panel_a)].edge_vertices[static_cast<std::size_t>(s.edge_a)];
+  const auto& rb = grids[static_cast<std::size_t>(s.panel_b)].edge_vertices[static_cast<std::size_t>(s.edge_b)];
+  if (ra.size() == rb.size() || ra.empty() || rb.empty()) return;
+  const bool a_short = ra.size() < rb.size();
+  const int panel = a_short ? s.panel_a : s.panel_b, edge = a_short ? s.edge_a : s.edge_b;
+  if (locked.count({panel, edge}) > 0) return;
+  const auto longer = a_short ? rb : ra;
+  PanelGrid& g = grids[static_cast<std::size_t>(panel)];
+  const Panel& p = pat.panels[static_cast<std::size_t>(panel)];
+  auto& shorter = g.edge_vertices[static_cast<std::size_t>(edge)];
+  const auto matched = seam_anchors(shorter, longer, s.reversed);  // keyed by the longer run's index
+  for (std::size_t j = 0; j < longer.size(); ++j) {
+    if (matched.count(static_cast<int>(j)) > 0) continue;
+    const double t = s.reversed ? 1 - longer[j].first : longer[j].first;
+    const auto run = bracketing_run(p, edge, g);
+    const auto k = std::lower_bound(run.begin(), run.end(), t, [](const auto& q, double y) { return q.first < y; });
+    if (k == run.end() || (k == run.begin() && k->first > t + 1e-9)) continue;  // beyond the outline's neighbours
+    const Vec2d point = point_on_edge(p, edge, t);
+    auto lo = k == run.begin() ? k : std::prev(k), hi = k == run.begin() ? std::next(k) : k;
+    if (std::abs(k->first - t) < 1e-9) {
+      const bool on_shorter =
+          std::any_of(shorter.begin(), shorter.end(), [&](const auto& q) { return q.second == k->second; });
+      if (on_shorter) continue;  // a vertex of the run is there already
+      if ((g.uv[static_cast<std::size_t>(k->second)] - point).norm() <
+          1e-9) {  // the panel's corner vertex joins the run
+        shorter.insert(
+            std::lower_bound(shorter.begin(), shorter.end(), t, [](const auto& q, double y) { return q.first < y; }),
+            *k);
+        continue;
+      }
+    }
+    if (hi == run.end()) continue;
+    const int x = split_boundary_edge(g, lo->second, hi->second, point);
+    shorter.insert(
+        std::upper_bound(shorter.begin(), shorter.end(), t, [](double y, const auto& q) { return y < q.first; }),
+        {t, x});
+  }
+}
+
 // Moves the vertices of an edge run to the pattern points of their arc fractions.
 void place_run(const Panel& p, int edge, PanelGrid& g) {
   for (const auto& [t, v] : g.edge_vertices[static_cast<std::size_t>(edge)])
@@ -189,6 +252,7 @@ void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& g
     const bool a_done = done.count({s.panel_a, s.edge_a}) > 0, b_done = done.count({s.panel_b, s.edge_b}) > 0;
     if ((a_done && b_done) || &ra == &rb) continue;
     snap_seam_ends(pat, s, h, grids, done);
+    even_out_runs(pat, s, grids, done);
     const bool a_fixed = a_done || (!b_done && ra.size() <= rb.size());
     auto& fixed = a_fixed ? ra : rb;
     auto& free_run = a_fixed ? rb : ra;

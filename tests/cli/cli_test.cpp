@@ -619,9 +619,8 @@ TEST_F(Cli, AUsersOwnBodyAndPatternRunSweepReportAndCompare) {
                        log),
             1)
       << read(log);
-  EXPECT_NE(read(log).find("ACCURACY REGRESSION collider=is-cpu: stopped meeting the accuracy limits"),
-            std::string::npos)
-      << read(log);
+  // the coarse mesh crosses the body with either collider: whichever row met the limits before stops meeting them
+  EXPECT_NE(read(log).find(": stopped meeting the accuracy limits ("), std::string::npos) << read(log);
 }
 
 // the verdict against the accuracy limits: in the summary (never "converged yes" alone), in the

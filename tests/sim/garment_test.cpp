@@ -64,33 +64,65 @@ TEST(Garment, BoundaryOnOutlineAndSeamsMatched) {
   EXPECT_GT(m.mesh.quads.cols(), 0);
 }
 
-TEST(Garment, EverySeamVertexIsPairedOrHasItsSegmentOfPartnerEdge) {
-  // a back narrower than the front: its sides hold fewer vertices, so some of the front's have no partner
+TEST(Garment, SeamEdgesOfDifferentCountsGetVerticesUntilEveryOneHasAPartner) {
+  // a back shorter than the front, and a slanted front side: the back's sides cross fewer grid rows
   Pattern pat = two_panel(40, 50);
   pat.panels[1] = rect("back", 40, 38);
+  pat.panels[0].outline[2] = Vec2d(35, 50);
+  for (const double h : {1.7, 2.3, 3.1, 4.4}) {
+    const MeshedPattern m = mesh_pattern(pat, h);
+    EXPECT_EQ(m.mesh.seam_loose.cols(), 0) << "spacing " << h;
+    for (const double offset : m.seam_offset_cm) EXPECT_LT(offset, 1e-6) << "spacing " << h;
+    // the added vertices are woven into the cloth: each has springs and cells, none of them of zero length
+    std::vector<int> springs(static_cast<std::size_t>(m.mesh.vertex_count())), cells = springs;
+    for (Eigen::Index s = 0; s < m.mesh.springs.cols(); ++s) {
+      ++springs[static_cast<std::size_t>(m.mesh.springs(0, s))],
+          ++springs[static_cast<std::size_t>(m.mesh.springs(1, s))];
+      EXPECT_GT(m.mesh.rest_length[s], 0.2f * float(h) / 100);
+    }
+    for (Eigen::Index q = 0; q < m.mesh.quads.cols(); ++q)
+      for (Eigen::Index k = 0; k < 4; ++k) ++cells[static_cast<std::size_t>(m.mesh.quads(k, q))];
+    for (int v = 0; v < m.mesh.vertex_count(); ++v) {
+      EXPECT_GE(springs[static_cast<std::size_t>(v)], 2) << "vertex " << v << ", spacing " << h;
+      EXPECT_GE(cells[static_cast<std::size_t>(v)], 1) << "vertex " << v << ", spacing " << h;
+    }
+  }
+}
+
+TEST(Garment, EverySeamVertexIsPairedOrHasItsSegmentOfPartnerEdge) {
+  // the back's left side is sewn twice: to the front, then to a taller flap. The second seam finds it
+  // placed already, so the flap's side keeps more vertices than it, some without a partner
+  Pattern pat = two_panel(40, 50);
+  pat.panels[1] = rect("back", 40, 38);
+  pat.panels.push_back(rect("flap", 10, 70));
+  pat.seams.push_back({2, 3, 1, 3, false});
   const MeshedPattern m = mesh_pattern(pat, 2.3);
   const auto& loose = m.mesh.seam_loose;
-  ASSERT_EQ(m.seam_loose_count.size(), 2u);
-  EXPECT_GT(m.seam_loose_count[0], 0);
-  EXPECT_EQ(loose.cols(), m.seam_loose_count[0] + m.seam_loose_count[1]);
+  ASSERT_EQ(m.seam_loose_count.size(), 3u);
+  EXPECT_EQ(m.seam_loose_count[0], 0);
+  EXPECT_EQ(m.seam_loose_count[1], 0);
+  EXPECT_GT(m.seam_loose_count[2], 0);
+  EXPECT_EQ(loose.cols(), m.seam_loose_count[2]);
   const auto panel = [&](int v) { return m.mesh.panel[static_cast<std::size_t>(v)]; };
   const auto is_paired = [&](int v) { return (m.mesh.seam_pairs.array() == v).any(); };
+  const std::array<double, 3> width{40, 40, 10}, height{50, 38, 70};
   for (Eigen::Index l = 0; l < loose.cols(); ++l) {
     const int v = loose(0, l), b0 = loose(1, l), b1 = loose(2, l);
     EXPECT_FALSE(is_paired(v)) << v;
-    EXPECT_NE(panel(v), panel(b0));
-    EXPECT_EQ(panel(b0), panel(b1));
-    // in the pattern, the vertex's height up its side lies between its partner vertices' (as fractions of the sides:
-    // the seams run reversed, each pairing an upward edge with a downward one)
-    const auto up = [&](int u) { return m.uv(1, u) / (panel(u) == 0 ? 50.0 : 38.0); };
+    EXPECT_EQ(panel(v), 2);
+    EXPECT_EQ(panel(b0), 1);
+    EXPECT_EQ(panel(b1), 1);
+    // in the pattern, the vertex's height up its side lies between its partner vertices' (as fractions of the sides)
+    const auto up = [&](int u) { return m.uv(1, u) / height[static_cast<std::size_t>(panel(u))]; };
     EXPECT_LE(std::min(up(b0), up(b1)) - 1e-9, up(v)) << v;
     EXPECT_GE(std::max(up(b0), up(b1)) + 1e-9, up(v)) << v;
   }
   // every vertex on a sewn side is paired or listed without a partner
   for (int v = 0; v < m.mesh.vertex_count(); ++v) {
-    const double u = m.uv(0, v), y = m.uv(1, v), h = panel(v) == 0 ? 50.0 : 38.0;
-    const bool on_side = m.boundary[static_cast<std::size_t>(v)] && (u < 1e-9 || u > 40 - 1e-9) && y > 1e-9 &&
-                         y < h - 1e-9;
+    const auto p = static_cast<std::size_t>(panel(v));
+    const double u = m.uv(0, v), y = m.uv(1, v);
+    const bool on_side = m.boundary[static_cast<std::size_t>(v)] && (u < 1e-9 || (p < 2 && u > width[p] - 1e-9)) &&
+                         y > 1e-9 && y < height[p] - 1e-9;
     if (on_side) {
       EXPECT_TRUE(is_paired(v) || (loose.row(0).array() == v).any()) << "vertex " << v;
     }
