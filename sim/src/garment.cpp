@@ -94,21 +94,35 @@ MeshedPattern mesh_pattern(const Pattern& pat, const MeshingOptions& o) {
   if (o.spacing_cm > 0) return mesh_pattern(pat, o.spacing_cm, o.attach);
   if (o.target_vertices < 8)
     throw std::invalid_argument("pattern " + pat.name + ": need a spacing or >= 8 target vertices");
-  // area / spacing^2 ~ vertices: start there, then search the spacing on a log scale
-  // (each panel's area counts positive, whichever way its outline turns)
+  // area / spacing^2 ~ vertices: start there (each panel's area counts positive, whichever way its outline
+  // turns), rescale the spacing by sqrt(count / target) while that closes in, then search steps of 1 % around
+  // the best spacing, nearest first, until a count lies within 1 % of the target or counts on both sides of it
+  // are seen (the count falls as the spacing grows: farther steps only go farther off)
   double area = 0;
   for (const auto& p : pat.panels) area += 0.5 * std::abs(twice_signed_area(p.outline));
-  const double h0 = std::sqrt(area / o.target_vertices);
   MeshedPattern best;
-  double best_err = 1e300;
-  // nearest spacings first: 0, +1, -1, +2, ... steps of 1 %
-  for (int i = 0; i <= 80; ++i) {
-    const int k = i % 2 ? (i + 1) / 2 : -i / 2;
-    const double h = h0 * std::pow(1.01, k);
+  double best_err = 1e300, best_h = std::sqrt(area / o.target_vertices);
+  const auto close_enough = [&](double err) { return err <= 0.01 * o.target_vertices; };
+  const auto mesh_at = [&](double h) {
     MeshedPattern m = mesh_pattern(pat, h, o.attach);
-    const double err = std::abs(m.mesh.vertex_count() - o.target_vertices);
-    if (err < best_err) best_err = err, best = std::move(m);
-    if (err <= 0.01 * o.target_vertices) break;
+    const int n = m.mesh.vertex_count();
+    const double err = std::abs(n - o.target_vertices);
+    if (err < best_err) best_err = err, best_h = h, best = std::move(m);
+    return n;
+  };
+  for (int i = 0, n = mesh_at(best_h); i < 6 && !close_enough(best_err); ++i) {
+    const double h = best_h * std::sqrt(double(n) / o.target_vertices);
+    const double before = best_err;
+    n = mesh_at(h);
+    if (!(best_err < before)) break;
+  }
+  // a count at or above the target seen, one at or below
+  bool over = best.mesh.vertex_count() >= o.target_vertices, under = best.mesh.vertex_count() <= o.target_vertices;
+  const double h0 = best_h;
+  for (int i = 1; i <= 40 && !close_enough(best_err) && !(over && under); ++i) {
+    const int k = i % 2 ? (i + 1) / 2 : -i / 2;
+    const int n = mesh_at(h0 * std::pow(1.01, k));
+    over = over || n >= o.target_vertices, under = under || n <= o.target_vertices;
   }
   return best;
 }

@@ -598,7 +598,7 @@ TEST_F(Cli, AUsersOwnBodyAndPatternRunSweepReportAndCompare) {
     std::ofstream(file(name)) << "[scene]\nname = \"aline\"\n[body]\nfile = \"scan.obj\"\n[[garment]]\nfile = "
                                  "\"aline.pattern\"\nvertices = "
                               << vertices
-                              << "\n[solver]\nthreshold = 0.10\n[stop]\nsew_max_s = 0.6\ndrape_max_s = 0.4\n";
+                              << "\n[solver]\nthreshold = 0.10\n[stop]\nsew_max_s = 1.0\ndrape_max_s = 0.4\n";
   };
   scene("aline.toml", 600);
   scene("aline-coarse.toml", 150);  // the change under test: a coarser mesh, to run faster
