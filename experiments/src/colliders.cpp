@@ -106,27 +106,37 @@ std::string body_table(ExperimentContext& ctx, const std::vector<Variant>& list)
     auto cold = make_collider(v.collider, options);
     cold->set_body(a);
     double cpu_near = 0;
-    const double ns_near = query_ns(*cold, near, &cpu_near), ns_far = query_ns(*cold, far), ns_inside = query_ns(*cold, inside);
+    const double ns_near = query_ns(*cold, near, &cpu_near), ns_far = query_ns(*cold, far),
+                 ns_inside = query_ns(*cold, inside);
     for (int k = 0; k < 2; ++k) cold->update_body(k % 2 ? a : b);
     const double update = cold->stats().update_ms / double(cold->stats().updates);
     t.row({v.label, num(setup, 1), num(update, 1), num(ns_near, 0), num(ns_far, 0), num(ns_inside, 0), num(next, 0),
            c->stats().searches > 0 ? num(searched, 1) : "-", num(acc.hits_pct, 2), num(acc.depth_mm, 3),
            num(acc.normal_deg, 2)});
-    nlohmann::json row{{"name", "colliders/body/" + v.label}, {"run_type", "iteration"}, {"iterations", 1},
-                       {"real_time", ns_near},   {"cpu_time", cpu_near},   {"time_unit", "ns"},
-                       {"setup_ms", setup},      {"update_ms", update},   {"far_ns", ns_far},
-                       {"inside_ns", ns_inside}, {"next_step_ns", next},  {"hit_agreement_pct", acc.hits_pct},
-                       {"depth_error_max_mm", acc.depth_mm},               {"normal_error_max_deg", acc.normal_deg}};
+    nlohmann::json row{{"name", "colliders/body/" + v.label},
+                       {"run_type", "iteration"},
+                       {"iterations", 1},
+                       {"real_time", ns_near},
+                       {"cpu_time", cpu_near},
+                       {"time_unit", "ns"},
+                       {"setup_ms", setup},
+                       {"update_ms", update},
+                       {"far_ns", ns_far},
+                       {"inside_ns", ns_inside},
+                       {"next_step_ns", next},
+                       {"hit_agreement_pct", acc.hits_pct},
+                       {"depth_error_max_mm", acc.depth_mm},
+                       {"normal_error_max_deg", acc.normal_deg}};
     ctx.add_row(row);
   }
   std::ostringstream out;
-  out << "## On the body\n\nThe walking body (" << a.triangle_count()
-      << " triangles) at 1 s of `walk_07_01`; " << n
+  out << "## On the body\n\nThe walking body (" << a.triangle_count() << " triangles) at 1 s of `walk_07_01`; " << n
       << " points each: *near* within 1 cm of the surface (either side), *far* 10-20 cm outside, *inside* 1-3 cm "
          "deep. Set-up: maps rendered, BVH built or field voxelised; update: one animation frame (1/30 s later; "
          "re-render, refit, re-voxelise), mean of two. Query columns: the collider's own query timer, each set "
          "queried once on a freshly built body, before any update (a coherent collider's first query of an array "
-         "is a search seeded by nothing, unbounded for points in the body's box); *next step*: the near points queried again after each moved "
+         "is a search seeded by nothing, unbounded for points in the body's box); *next step*: the near points queried "
+         "again after each moved "
          "1 mm, where temporal coherence works, with the share of points that needed a search. Accuracy: the "
          "near points against `brute` (exact), depth and normal where both hit; image space reads depth along the "
          "view axis from a front and a back map (the papers' method), so points beside the body and in folds "
@@ -149,7 +159,16 @@ const RunResult& shirt_run(ExperimentContext& ctx, const Variant& v) {
                   std::string("collider.coherent=") + (v.coherent ? "true" : "false")});
 }
 
-// the page's opening lines: the papers' claim, the cheapest collider in the shirt's run within every limit, and overall
+// whether a run keeps the detection's limits: inside, depth and crossings (the capped shirt runs stop before
+// the seams close, so the seam gap and strain are judged on dressing-t1's full runs)
+bool detection_within_limits(const RunResult& r) {
+  const AccuracyLimits& l = kAccuracyLimits;
+  return !r.divergence && r.accuracy.inside_pct <= l.inside_pct && r.accuracy.depth_max_mm <= l.depth_mm &&
+         r.accuracy.crossings_pct <= l.crossings_pct;
+}
+
+// the page's opening lines: the papers' claim, the cheapest collider in the shirt's run within the detection's
+// limits, and overall
 std::vector<std::string> summary(ExperimentContext& ctx, const std::vector<Variant>& list) {
   const Variant* within = nullptr;
   const Variant* any = nullptr;
@@ -157,21 +176,25 @@ std::vector<std::string> summary(ExperimentContext& ctx, const std::vector<Varia
     const RunResult& r = shirt_run(ctx, v);
     if (r.divergence) continue;
     if (!any || r.cdr_ms_per_iteration() < shirt_run(ctx, *any).cdr_ms_per_iteration()) any = &v;
-    if (limit_misses(r).empty() &&
+    if (detection_within_limits(r) &&
         (!within || r.cdr_ms_per_iteration() < shirt_run(ctx, *within).cdr_ms_per_iteration()))
       within = &v;
   }
   const auto text = [&](const Variant* v) {
     const RunResult& r = shirt_run(ctx, *v);
-    return v->label + ", " + num(r.cdr_ms_per_iteration(), 3) + " ms of collisions per iteration (" + limits_cell(r) +
-           ")";
+    return v->label + ", " + num(r.cdr_ms_per_iteration(), 3) + " ms of collisions per iteration (inside " +
+           num(r.accuracy.inside_pct, 2) + " %, depth max " + num(r.accuracy.depth_max_mm, 2) + " mm, crossings " +
+           num(r.accuracy.crossings_pct, 2) + " %)";
   };
   return {
       "The papers: image space (maps of the body drawn by graphics hardware) answers cloth-body collisions "
       "faster than object space (walking Table 1, dressing Table 1).",
-      "Ours, the shirt of dressing-t1, every collider for the same iterations, one run each: the cheapest of all " +
-          (any ? text(any) : std::string("none ran")) + "; the cheapest meeting every limit, strain included, " +
-          (within ? text(within) : std::string("none")) + ".",
+      "Ours, the shirt of dressing-t1, every collider for the same " + std::to_string(shirt_cap(ctx)) +
+          " iterations per phase, one run each: the cheapest of all " + (any ? text(any) : std::string("none ran")) +
+          "; the cheapest within the detection's limits (inside, depth, crossings) " +
+          (within ? text(within) : std::string("none")) +
+          ". The seams are still closing when the cap stops the run, so the seam gap and strain are judged on "
+          "dressing-t1's full runs.",
       "Verdict: the collision costs per collider are in the tables below, with each one's accuracy against exact "
       "geometry; the verdict on the papers' claim is in results/claims.md."};
 }

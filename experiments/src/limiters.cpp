@@ -22,8 +22,9 @@ struct Case {
 };
 
 // every limiter but none and stiff (whose figures are those of the cloth's own springs)
-const char* const kLimits[] = {"velocity-zero", "velocity", "directional", "directional-literal", "position",
-                               "tethers", "follow", "projection", "impulses"};
+const char* const kLimits[] = {"velocity-zero", "velocity", "directional", "directional-literal",
+                               "position",      "tethers",  "follow",      "projection",
+                               "impulses"};
 
 struct Setting {
   const char* regime;
@@ -56,14 +57,14 @@ std::vector<std::string> overrides(const ExperimentContext& ctx, const Case& c, 
 struct Measured {
   const Case* c;
   Setting s;
-  bool ok = false;          // ran to its end without diverging
-  bool meets = false;       // every accuracy limit (every frame when walking)
-  double strain_pct = 0;    // the largest structural strain (at any frame when walking) [%]
-  double limit_ms = 0;      // the limiter per step [ms]
-  double share = 0;         // of the step (CD&R + CS)
+  bool ok = false;        // ran to its end without diverging
+  bool meets = false;     // every accuracy limit (every frame when walking)
+  double strain_pct = 0;  // the largest structural strain (at any frame when walking) [%]
+  double limit_ms = 0;    // the limiter per step [ms]
+  double share = 0;       // of the step (CD&R + CS)
   double step_ms = 0;
-  double speed = 0;         // frames/s walking, else wall time to dressed [s]
-  std::string verdict;      // limits_cell: "yes", or what it misses
+  double speed = 0;     // frames/s walking, else wall time to dressed [s]
+  std::string verdict;  // limits_cell: "yes", or what it misses
 };
 
 // whether the stable regime runs the limiter again after the response, as words after its name
@@ -74,8 +75,8 @@ std::string limit_label(const Setting& s) { return std::string(s.limit) + after_
 
 std::vector<std::string> row_cells(const Measured& m, const RunResult& r) {
   const bool walking = *m.c->clip;
-  std::vector<std::string> cells{m.c->garment, walking ? m.c->clip : "static", m.s.regime, limit_label(m.s),
-                                 std::to_string(m.s.passes), std::to_string(r.vertices)};
+  std::vector<std::string> cells{m.c->garment,     walking ? m.c->clip : "static", m.s.regime,
+                                 limit_label(m.s), std::to_string(m.s.passes),     std::to_string(r.vertices)};
   if (!m.ok) {
     const std::string why = r.divergence ? "diverged at iteration " + std::to_string(r.divergence->iteration) + " (" +
                                                to_string(r.divergence->phase) + ")"
@@ -88,10 +89,9 @@ std::vector<std::string> row_cells(const Measured& m, const RunResult& r) {
   const double depth = walking ? r.frame_max(&FrameSample::depth_max_mm) : r.accuracy.depth_max_mm;
   const double crossings = walking ? r.frame_max(&FrameSample::crossings_pct) : r.accuracy.crossings_pct;
   cells.insert(cells.end(), {num(m.strain_pct, 1) + " / " + num(100 * p99, 1), num(100 * r.strain_over, 2),
-                             num(inside, 2) + " / " + num(depth, 1) + " / " + num(crossings, 2),
-                             num(m.limit_ms, 3), num(100 * m.share, 0), num(m.step_ms, 3),
-                             walking ? num(m.speed, 1) : num(m.speed, 3), std::to_string(r.iterations()),
-                             limits_cell(r)});
+                             num(inside, 2) + " / " + num(depth, 1) + " / " + num(crossings, 2), num(m.limit_ms, 3),
+                             num(100 * m.share, 0), num(m.step_ms, 3), walking ? num(m.speed, 1) : num(m.speed, 3),
+                             std::to_string(r.iterations()), limits_cell(r)});
   return cells;
 }
 
@@ -149,14 +149,13 @@ std::string cheapest(const std::vector<Measured>& rows) {
     for (const Measured& n : rows)
       if (n.c == m.c && std::string(n.s.regime) == m.s.regime && n.meets && (!best || n.limit_ms < best->limit_ms))
         best = &n;
-    out += std::string("- ") + m.c->garment + ", " + (*m.c->clip ? m.c->clip : "static body") + ", " + m.s.regime +
-           ": " +
-           (best ? std::string("`") + best->s.limit + "`" + after_words(best->s) + ", " + std::to_string(best->s.passes) +
-                       (best->s.passes == 1 ? " pass, " : " passes, ") +
-                       num(best->limit_ms, 3) + " ms a step (" + num(100 * best->share, 0) + " % of the step), strain " +
-                       num(best->strain_pct, 1) + " %"
-                 : std::string("no setting measured here meets every limit")) +
-           "\n";
+    out +=
+        std::string("- ") + m.c->garment + ", " + (*m.c->clip ? m.c->clip : "static body") + ", " + m.s.regime + ": " +
+        (best ? std::string("`") + best->s.limit + "`" + after_words(best->s) + ", " + std::to_string(best->s.passes) +
+                    (best->s.passes == 1 ? " pass, " : " passes, ") + num(best->limit_ms, 3) + " ms a step (" +
+                    num(100 * best->share, 0) + " % of the step), strain " + num(best->strain_pct, 1) + " %"
+              : std::string("no setting measured here meets every limit")) +
+        "\n";
   }
   return out;
 }
@@ -176,15 +175,15 @@ std::vector<std::string> summary(const std::vector<Measured>& rows, std::size_t 
       ++meets;
       if (!least || m.share < least->share) least = &m;
     }
-    lines.push_back(
-        std::string("Ours, ") + (regime == std::string("papers") ? "the papers' clock" : "our stable regime") +
-        ", one run each: " + std::to_string(meets) + " of " + std::to_string(all) +
-        " rows meet every limit, strain included" +
-        (least ? "; the smallest limiter share among them " + num(100 * least->share, 0) + " % of the step (`" +
-                     least->s.limit + "`, " + std::to_string(least->s.passes) + " passes, " + least->c->garment + ", " +
-                     (*least->c->clip ? least->c->clip : "static body") + ")"
-               : std::string()) +
-        ".");
+    lines.push_back(std::string("Ours, ") +
+                    (regime == std::string("papers") ? "the papers' clock" : "our stable regime") + ", one run each: " +
+                    std::to_string(meets) + " of " + std::to_string(all) + " rows meet every limit, strain included" +
+                    (least ? "; the smallest limiter share among them " + num(100 * least->share, 0) +
+                                 " % of the step (`" + least->s.limit + "`, " + std::to_string(least->s.passes) +
+                                 (least->s.passes == 1 ? " pass, " : " passes, ") + least->c->garment + ", " +
+                                 (*least->c->clip ? least->c->clip : "static body") + ")"
+                           : std::string()) +
+                    ".");
   }
   // cases with a setting within every limit at most a quarter of the step, per regime
   const auto quarter = [&](const char* regime) {
@@ -195,9 +194,10 @@ std::vector<std::string> summary(const std::vector<Measured>& rows, std::size_t 
         seen.push_back(m.c);
     return std::to_string(seen.size()) + " of the " + std::to_string(cases) + " garment and body cases";
   };
-  lines.push_back("Verdict: the target, a limiter within every limit at most a quarter of the step at the papers' "
-                  "clock, is met in " + quarter("papers") + "; in our stable regime (beside the target) in " +
-                  quarter("stable") + ".");
+  lines.push_back(
+      "Verdict: the target, a limiter within every limit at most a quarter of the step at the papers' "
+      "clock, is met in " +
+      quarter("papers") + "; in our stable regime (beside the target) in " + quarter("stable") + ".");
   return lines;
 }
 
@@ -218,8 +218,8 @@ void limiters(ExperimentContext& ctx) {
     for (int passes : {1, 8}) stable.push_back({"stable", limit, passes});
   stable.push_back({"stable", "velocity", 8, true});
   // the warm-started impulses: one pass, once a step and again after the response, and two
-  const std::vector<Setting> impulses{{"stable", "impulses", 1}, {"stable", "impulses", 1, true},
-                                      {"stable", "impulses", 2, true}};
+  const std::vector<Setting> impulses{
+      {"stable", "impulses", 1}, {"stable", "impulses", 1, true}, {"stable", "impulses", 2, true}};
   stable.insert(stable.end(), impulses.begin(), impulses.end());
   const auto join = [](std::vector<Setting> a, const std::vector<Setting>& b) {
     a.insert(a.end(), b.begin(), b.end());
@@ -227,12 +227,15 @@ void limiters(ExperimentContext& ctx) {
   };
   // walking: the stable regime's default (Eq. 5, 8 passes, again after the response), twice its passes, and the
   // warm-started impulses at one and two
-  const std::vector<Setting> walking_after{{"stable", "velocity", 8, true}, {"stable", "velocity", 16, true},
-                                           {"stable", "impulses", 1, true}, {"stable", "impulses", 2, true}};
-  const std::vector<Setting> second_clip =
-      join({{"papers", "velocity", 32}, {"papers", "tethers", 32}, {"papers", "projection", 8},
-            {"stable", "directional", 8}},
-           walking_after);
+  const std::vector<Setting> walking_after{{"stable", "velocity", 8, true},
+                                           {"stable", "velocity", 16, true},
+                                           {"stable", "impulses", 1, true},
+                                           {"stable", "impulses", 2, true}};
+  const std::vector<Setting> second_clip = join({{"papers", "velocity", 32},
+                                                 {"papers", "tethers", 32},
+                                                 {"papers", "projection", 8},
+                                                 {"stable", "directional", 8}},
+                                                walking_after);
   const std::vector<std::pair<Case, std::vector<Setting>>> cases = {
       {{"shirt", "dressing/shirt.toml", 1800, ""}, join(papers_all, stable)},
       {{"dress", "dressing/dress.toml", 2300, ""}, join(papers_main, stable)},
