@@ -318,8 +318,7 @@ std::vector<LooseVertex> loose_vertices(const std::vector<std::pair<double, int>
     const auto j = static_cast<std::size_t>(
         std::upper_bound(partner.begin(), partner.end(), tp, [](double x, const auto& q) { return x < q.first; }) -
         partner.begin());
-    const LooseVertex l{v, partner[j == 0 ? 0 : j - 1].second, partner[j == n ? n - 1 : j].second};
-    if (l.b0 != v && l.b1 != v) out.push_back(l);  // a dart's tip is on both of its edges
+    out.push_back({v, partner[j == 0 ? 0 : j - 1].second, partner[j == n ? n - 1 : j].second});
   }
   return out;
 }
