@@ -177,4 +177,3 @@ ClothMesh build_garment(const Pattern& pat, const MeshingOptions& o, const BodyF
 }
 
 }  // namespace clothbench
-
