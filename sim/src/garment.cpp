@@ -46,10 +46,14 @@ void pair_seams(const Pattern& pat, const std::vector<PanelGrid>& grids, const s
     }
     out.seam_pair_count.push_back(count);
     const std::size_t before = loose.size();
+    const auto add = [&](const LooseVertex& l, int own, int other) {
+      const LooseVertex g{l.v + own, l.b0 + other, l.b1 + other};
+      if (g.v != g.b0 && g.v != g.b1) loose.push_back(g);  // a dart's tip is on both of its edges
+    };
     for (auto l : loose_vertices(ra, run_to_corners(pat.panels[pb], s.edge_b, grids[pb]), s.reversed, paired_a))
-      loose.push_back({l.v + offset[pa], l.b0 + offset[pb], l.b1 + offset[pb]});
+      add(l, offset[pa], offset[pb]);
     for (auto l : loose_vertices(rb, run_to_corners(pat.panels[pa], s.edge_a, grids[pa]), s.reversed, paired_b))
-      loose.push_back({l.v + offset[pb], l.b0 + offset[pa], l.b1 + offset[pa]});
+      add(l, offset[pb], offset[pa]);
     out.seam_loose_count.push_back(static_cast<int>(loose.size() - before));
   }
   out.mesh.seam_pairs.resize(2, static_cast<Eigen::Index>(pairs.size()));
@@ -173,4 +177,3 @@ ClothMesh build_garment(const Pattern& pat, const MeshingOptions& o, const BodyF
 }
 
 }  // namespace clothbench
-

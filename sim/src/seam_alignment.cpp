@@ -93,10 +93,13 @@ std::map<int, double> seam_anchors(const std::vector<std::pair<double, int>>& fi
   return anchors;
 }
 
-// Whether some vertex of the panel sits at pattern point p.
-bool occupied(const PanelGrid& g, const Vec2d& p) {
-  return std::any_of(g.uv.begin(), g.uv.end(), [&](const Vec2d& q) { return (q - p).norm() < 1e-9; });
+// The panel's vertex at pattern point p (-1 when none sits there).
+int vertex_at(const PanelGrid& g, const Vec2d& p) {
+  const auto v = std::find_if(g.uv.begin(), g.uv.end(), [&](const Vec2d& q) { return (q - p).norm() < 1e-9; });
+  return v == g.uv.end() ? -1 : static_cast<int>(v - g.uv.begin());
 }
+
+bool occupied(const PanelGrid& g, const Vec2d& p) { return vertex_at(g, p) >= 0; }
 
 // Whether vertex v lies on more than one edge of the panel (a corner, or where edges touch).
 bool on_several_edges(const PanelGrid& g, int v) {
@@ -206,9 +209,8 @@ void even_out_runs(const Pattern& pat, const Seam& s, std::vector<PanelGrid>& gr
     if (std::abs(k->first - t) < 1e-9) {
       const bool on_shorter =
           std::any_of(shorter.begin(), shorter.end(), [&](const auto& q) { return q.second == k->second; });
-      if (on_shorter) continue;  // a vertex of the run is there already
-      if ((g.uv[static_cast<std::size_t>(k->second)] - point).norm() <
-          1e-9) {  // the panel's corner vertex joins the run
+      if (on_shorter) continue;                // a vertex of the run is there already
+      if (vertex_at(g, point) == k->second) {  // the panel's corner vertex joins the run
         shorter.insert(
             std::lower_bound(shorter.begin(), shorter.end(), t, [](const auto& q, double y) { return q.first < y; }),
             *k);
@@ -292,12 +294,7 @@ std::vector<std::array<int, 2>> match_runs(const std::vector<std::pair<double, i
 std::vector<std::pair<double, int>> run_to_corners(const Panel& p, int e, const PanelGrid& g) {
   auto run = g.edge_vertices[static_cast<std::size_t>(e)];
   if (run.empty()) return run;
-  const auto corner = [&](double t) {  // the panel's vertex on the corner, if it has one
-    const Vec2d c = point_on_edge(p, e, t);
-    for (std::size_t v = 0; v < g.uv.size(); ++v)
-      if ((g.uv[v] - c).norm() < 1e-9) return static_cast<int>(v);
-    return -1;
-  };
+  const auto corner = [&](double t) { return vertex_at(g, point_on_edge(p, e, t)); };  // -1: none on the corner
   if (!is_corner(run.front().first))
     if (const int c = corner(0); c >= 0) run.insert(run.begin(), {0.0, c});
   if (!is_corner(run.back().first))
@@ -318,8 +315,7 @@ std::vector<LooseVertex> loose_vertices(const std::vector<std::pair<double, int>
     const auto j = static_cast<std::size_t>(
         std::upper_bound(partner.begin(), partner.end(), tp, [](double x, const auto& q) { return x < q.first; }) -
         partner.begin());
-    const LooseVertex l{v, partner[j == 0 ? 0 : j - 1].second, partner[j == n ? n - 1 : j].second};
-    if (l.b0 != v && l.b1 != v) out.push_back(l);  // a dart's tip is on both of its edges
+    out.push_back({v, partner[j == 0 ? 0 : j - 1].second, partner[j == n ? n - 1 : j].second});
   }
   return out;
 }
