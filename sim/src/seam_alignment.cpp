@@ -101,11 +101,15 @@ int vertex_at(const PanelGrid& g, const Vec2d& p) {
 
 bool occupied(const PanelGrid& g, const Vec2d& p) { return vertex_at(g, p) >= 0; }
 
+// Whether an edge run holds vertex v.
+bool holds(const std::vector<std::pair<double, int>>& run, int v) {
+  return std::any_of(run.begin(), run.end(), [&](const auto& tv) { return tv.second == v; });
+}
+
 // Whether vertex v lies on more than one edge of the panel (a corner, or where edges touch).
 bool on_several_edges(const PanelGrid& g, int v) {
   int runs = 0;
-  for (const auto& run : g.edge_vertices)
-    runs += std::any_of(run.begin(), run.end(), [&](const auto& tv) { return tv.second == v; });
+  for (const auto& run : g.edge_vertices) runs += holds(run, v);
   return runs > 1;
 }
 
@@ -158,7 +162,7 @@ void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<Pan
   for (const Joined& j : joined) {
     if (j.edge < 0 || locked.count({j.panel, j.edge}) > 0) continue;
     auto& run = grids[static_cast<std::size_t>(j.panel)].edge_vertices[static_cast<std::size_t>(j.edge)];
-    if (std::any_of(run.begin(), run.end(), [&](const auto& tv) { return tv.second == j.vertex; })) continue;
+    if (holds(run, j.vertex)) continue;
     run.insert(j.t > 0.5 ? run.end() : run.begin(), {j.t, j.vertex});
   }
 }
@@ -167,15 +171,12 @@ void snap_seam_ends(const Pattern& pat, const Seam& s, double h, std::vector<Pan
 // else the nearest vertex of the edge meeting it there that is not on the run, at fraction 0 or 1.
 std::vector<std::pair<double, int>> bracketing_run(const Panel& p, int e, const PanelGrid& g) {
   auto run = run_to_corners(p, e, g);
-  const auto on_run = [&](int v) {
-    return std::any_of(run.begin(), run.end(), [&](const auto& q) { return q.second == v; });
-  };
   for (const double t : {0.0, 1.0}) {
     const int next = edge_at_corner(p, e, t);
     if (run.empty() || std::abs((t > 0.5 ? run.back() : run.front()).first - t) < 1e-9 || next < 0) continue;
     auto nr = g.edge_vertices[static_cast<std::size_t>(next)];  // from the corner away
     if (t < 0.5) std::reverse(nr.begin(), nr.end());
-    const auto v = std::find_if(nr.begin(), nr.end(), [&](const auto& q) { return !on_run(q.second); });
+    const auto v = std::find_if(nr.begin(), nr.end(), [&](const auto& q) { return !holds(run, q.second); });
     if (v != nr.end()) run.insert(t > 0.5 ? run.end() : run.begin(), {t, v->second});
   }
   return run;
@@ -207,10 +208,8 @@ void even_out_runs(const Pattern& pat, const Seam& s, std::vector<PanelGrid>& gr
     const Vec2d point = point_on_edge(p, edge, t);
     auto lo = k == run.begin() ? k : std::prev(k), hi = k == run.begin() ? std::next(k) : k;
     if (std::abs(k->first - t) < 1e-9) {
-      const bool on_shorter =
-          std::any_of(shorter.begin(), shorter.end(), [&](const auto& q) { return q.second == k->second; });
-      if (on_shorter) continue;                // a vertex of the run is there already
-      if (vertex_at(g, point) == k->second) {  // the panel's corner vertex joins the run
+      if (holds(shorter, k->second)) continue;  // a vertex of the run is there already
+      if (vertex_at(g, point) == k->second) {   // the panel's corner vertex joins the run
         shorter.insert(
             std::lower_bound(shorter.begin(), shorter.end(), t, [](const auto& q, double y) { return q.first < y; }),
             *k);
