@@ -1,4 +1,5 @@
-// The animate phase: body frames one after another, each a collider update and a few cloth steps.
+// The animate phase: body frames one after another, each one or more poses (a collider update each) and a few
+// cloth steps a pose.
 #include "animation.hpp"
 
 #include <algorithm>
@@ -20,7 +21,6 @@ namespace {
 struct Animation {
   const RunContext& run;
   AnimationPlan plan;
-  double frame_dt = 0;      // 1 / body.fps [s]
   bool between = false;     // body.move_between_frames: each step sees the body at its own time
   Real region_margin = 0;   // collider.query_margin_mm: how far the cloth may move in a frame [m]
   bool alive = true;        // not diverged
@@ -49,18 +49,18 @@ void set_region(Collider& collider, const Simulator& sim, Real region_margin, in
   collider.set_query_region(region);
 }
 
-// one body frame at `t`: evaluate (timed), update the collider, move attachments, then the plan's steps spread over
-// the frame; with body.move_between_frames each step sees the body where it was at the step's time
-// (BodyBetweenFrames), else the frame's end pose throughout. With a worker, a frame at t prepared during the last
-// one is taken from it, and the frame at `t_next` (> 0) is prepared while this one's steps run (its map rows from
-// the cloth's box now, grown by two frames' margin). Returns whether the cloth is still alive
-bool advance_frame(Animation& a, FramePass& pass, double t, double t_next) {
+// one body pose at `t`: evaluate (timed), update the collider, move attachments, then `steps` steps spread over
+// the pose's interval; with body.move_between_frames each step sees the body where it was at the step's time
+// (BodyBetweenFrames), else the pose throughout. With a worker, a pose at t prepared during the last one is taken
+// from it, and the pose at `t_next` (> 0) is prepared while this one's steps run (its map rows from the cloth's
+// box now, grown by two poses' margin). Returns whether the cloth is still alive
+bool advance_pose(Animation& a, FramePass& pass, double t, double t_next, long steps) {
   Simulator& sim = a.run.sim;
   BodyFrame& frame = a.run.frame;
   FrameAhead* const ahead = pass.ahead;
   // a frame prepared ahead is always the next one asked for (else the collider would make stale maps current)
   if (ahead && ahead->t >= 0 && ahead->t != t)
-    throw std::logic_error("advance_frame: the frame prepared ahead is not next");
+    throw std::logic_error("advance_pose: the pose prepared ahead is not next");
   // the body at t, from the worker or evaluated here, and the collider updated to it
   if (ahead && ahead->t == t) {
     std::swap(frame, ahead->frame);
@@ -78,14 +78,13 @@ bool advance_frame(Animation& a, FramePass& pass, double t, double t_next) {
     set_region(pass.collider, sim, a.region_margin, 2);
     ahead->start(pass.collider, t_next);
   }
-  // the cloth's steps through the frame, each `tau` before the pose
-  const long steps = a.plan.steps;
+  // the cloth's steps through the pose's interval, each `tau` before the pose
   const bool attached = !sim.mesh().attached.empty();
   if (attached && !a.between) sim.follow_attachments(frame);
   bool alive = true;
   sim.set_collider(&pass.collider);
   for (long s = 0; s < steps && alive; ++s) {
-    const Real tau = a.between ? Real(a.frame_dt * double(steps - 1 - s) / double(steps)) : Real(0);
+    const Real tau = a.between ? Real(a.plan.pose_dt * double(steps - 1 - s) / double(steps)) : Real(0);
     pass.collider.set_time_before_pose(tau);
     // attached vertices start the step where the body had them a step before tau, and the step's dt v brings
     // them to tau (held once per frame, they would run a frame ahead of the body and jump back)
@@ -96,12 +95,21 @@ bool advance_frame(Animation& a, FramePass& pass, double t, double t_next) {
   return alive;
 }
 
+// frame `f` (from 1) of `frames` after `t0`: its poses, the last at the frame's time
+void advance_frame(Animation& a, FramePass& pass, double t0, long f, long frames) {
+  const long n = a.plan.poses, last = frames * n;
+  const auto time = [&](long k) { return t0 + double(k) * a.plan.pose_dt; };
+  for (long j = 0; j < n && a.alive; ++j) {
+    const long k = (f - 1) * n + j + 1;
+    a.alive = advance_pose(a, pass, time(k), k < last ? time(k + 1) : 0, a.plan.pose_steps(j));
+  }
+}
+
 // the lead-in: dress_at_s -> start_s with the dressing collider, not measured
 void lead_in(Animation& a, FramePass& pass) {
   const long frames = a.plan.lead_in;
-  const auto time = [&](long f) { return a.run.source.dress_time() + double(f) * a.frame_dt; };
   for (long f = 1; f <= frames && a.alive; ++f) {
-    a.alive = advance_frame(a, pass, time(f), f < frames ? time(f + 1) : 0);
+    advance_frame(a, pass, a.run.source.dress_time(), f, frames);
     a.run.progress.report("animate (lead-in): frame %ld of %ld", f, frames);
   }
 }
@@ -123,10 +131,9 @@ void look_at_frame(Animation& a, long f, double t, RunResult& r) {
 // to `outside`
 void measured_window(Animation& a, FramePass& pass, Outside& outside, RunResult& r) {
   const long frames = a.plan.frames;
-  const auto time = [&](long f) { return a.run.source.start() + double(f) * a.frame_dt; };
   for (long f = 1; f <= frames && a.alive; ++f) {
-    const double t = time(f);
-    a.alive = advance_frame(a, pass, t, f < frames ? time(f + 1) : 0);
+    const double t = a.run.source.start() + double(f * a.plan.poses) * a.plan.pose_dt;
+    advance_frame(a, pass, a.run.source.start(), f, frames);
     r.prepared_frames += pass.ahead && f < frames && pass.ahead->prepared;
     ++r.frames;
     Stopwatch wall;
@@ -144,8 +151,8 @@ void animate(const RunContext& run, RunResult& r) {
   if (!run.source.moves()) return;
   const Scene& scene = run.scene;
   run.sim.set_phase(Phase::kAnimate);
-  Animation a{run, animation_plan(scene, run.source, run.sim.dt()), 1.0 / scene.body.fps,
-              scene.body.move_between_frames, Real(scene.collider_options.query_margin_mm * 1e-3)};
+  Animation a{run, animation_plan(scene, run.source, run.sim.dt()), scene.body.move_between_frames,
+              Real(scene.collider_options.query_margin_mm * 1e-3)};
   r.steps_per_frame = double(a.plan.steps);
   // both passes' colliders answer between frames, the body body.skin_mm thicker; with body.prepare_ahead each pass
   // has its worker
@@ -170,6 +177,7 @@ void animate(const RunContext& run, RunResult& r) {
   r.animate.reached = a.alive && r.frames == a.plan.frames;
   const CollideStats after = run.collider.stats();
   r.collider_update_ms = after.update_ms - before.update_ms;
+  r.collider_updates = long(after.updates - before.updates);
   r.collider_queries = after.queries - before.queries;
   r.collider_query_ms = after.query_ms - before.query_ms;
   clock.finish(r.animate);

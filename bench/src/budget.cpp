@@ -59,6 +59,8 @@ AnimationPlan animation_plan(const Scene& scene, const BodySource& source, doubl
   const double frame_dt = 1.0 / scene.body.fps;
   AnimationPlan p;
   p.steps = std::max(1L, static_cast<long>(std::ceil(frame_dt / dt)));
+  p.poses = std::min(poses_per_frame(scene.body), p.steps);
+  p.pose_dt = frame_dt / double(p.poses);
   p.lead_in = static_cast<long>(std::floor((source.start() - source.dress_time()) / frame_dt + 1e-9));
   p.frames = static_cast<long>(std::floor((source.end() - source.start()) / frame_dt + 1e-9));
   return p;
@@ -70,6 +72,7 @@ Budget iteration_budget(const Scene& scene, const BodySource& source, const Simu
   b.drape = iteration_cap(scene, scene.stop.drape_max_s, sim.dt());
   const AnimationPlan a = animation_plan(scene, source, sim.dt());
   b.frames = a.lead_in + a.frames;
+  b.poses = b.frames * a.poses;
   b.animate = b.frames * a.steps;
   b.lead_in = a.lead_in * a.steps;
   return b;
@@ -87,7 +90,7 @@ Estimate estimate_seconds(const Simulator& sim, Collider& dresser, Collider& col
   Estimate e;
   e.dressing_s = (cloth_ms + dress_ms) * double(b.sew + b.drape) / 1e3;
   e.animation_s = (cloth_ms * double(b.animate) + dress_ms * double(b.lead_in) +
-                   measure_ms * double(b.animate - b.lead_in) + update_ms * double(b.frames)) /
+                   measure_ms * double(b.animate - b.lead_in) + update_ms * double(b.poses)) /
                   1e3;
   return e;
 }

@@ -14,17 +14,22 @@ namespace clothbench::runner_detail {
 // the iterations of `seconds` of simulated time at step `dt`, at most stop.max_iterations (when > 0)
 long iteration_cap(const Scene& scene, double seconds, double dt);
 
-// the animate phase's frames: `steps` iterations each, `lead_in` frames before the measured `frames`
+// the animate phase's frames: `steps` iterations each, spread over `poses` body poses (collider updates), `lead_in`
+// frames before the measured `frames`
 struct AnimationPlan {
-  long steps = 0, lead_in = 0, frames = 0;
+  long poses = 1, steps = 0, lead_in = 0, frames = 0;
+  double pose_dt = 0;  // [s]
+  // the steps of pose j (from 0) of a frame: its share of the frame's, each pose at least one
+  long pose_steps(long j) const { return (j + 1) * steps / poses - j * steps / poses; }
 };
 
-// the plan at body.fps: ceil((1/fps)/dt) steps per frame; none for a body that does not move
+// the plan at body.fps: ceil((1/fps)/dt) steps per frame, the body posed body.pose_fps / fps times a frame (no
+// more often than the cloth steps); none for a body that does not move
 AnimationPlan animation_plan(const Scene& scene, const BodySource& source, double dt);
 
 // the most iterations each phase may take; the animate phase's lead-in runs with the dressing collider
 struct Budget {
-  long sew = 0, drape = 0, animate = 0, lead_in = 0, frames = 0;
+  long sew = 0, drape = 0, animate = 0, lead_in = 0, frames = 0, poses = 0;
   long total() const { return sew + drape + animate; }
   long dressing() const { return sew + drape + lead_in; }
 };

@@ -197,6 +197,7 @@ void add_animation_fields(const RunResult& r, nlohmann::json& row) {
   row["steps_per_frame"] = r.steps_per_frame;
   row["skinning_ms_per_frame"] = r.skinning_ms / double(r.frames);
   row["collider_update_ms_per_frame"] = r.collider_update_ms / double(r.frames);
+  row["poses_per_frame"] = double(r.collider_updates) / double(r.frames);
   row["animate_iterations"] = r.animate.iterations;
   row["prepared_frames"] = r.prepared_frames;
 }

@@ -42,7 +42,8 @@ void run_fields(J& j, R& r, F&& f) {
   f(j, "collision_triangles", r.collision_triangles), f(j, "proxy_deviation_mm", r.proxy_deviation_mm);
   f(j, "dt_bound_s", r.dt_bound_s), f(j, "dt_spectral_s", r.dt_spectral_s), f(j, "k_structural", r.k_structural);
   f(j, "frames", r.frames), f(j, "steps_per_frame", r.steps_per_frame), f(j, "skinning_ms", r.skinning_ms);
-  f(j, "collider_update_ms", r.collider_update_ms), f(j, "setup_ms", r.setup_ms), f(j, "search_share", r.search_share);
+  f(j, "collider_update_ms", r.collider_update_ms), f(j, "collider_updates", r.collider_updates);
+  f(j, "setup_ms", r.setup_ms), f(j, "search_share", r.search_share);
   f(j, "threads", r.threads), f(j, "prepared_frames", r.prepared_frames), f(j, "seam_gap_max_mm", r.seam_gap_max_mm);
   f(j, "strain_max", r.strain_max);
   f(j, "strain_p99", r.strain_p99), f(j, "strain_over", r.strain_over), f(j, "strain_max_where", r.strain_max_where);

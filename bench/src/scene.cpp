@@ -21,6 +21,15 @@ namespace clothbench {
 
 namespace {
 
+// body.pose_fps: 0, or a whole multiple of body.fps
+void check_pose_fps(const std::string& file, const BodySpec& b) {
+  const double ratio = b.pose_fps / b.fps;
+  if (b.pose_fps == 0 || (ratio >= 1 && std::abs(ratio - std::round(ratio)) < 1e-9)) return;
+  throw InputError(located(file, 0, "body.pose_fps = " + std::to_string(b.pose_fps) +
+                                        ": must be 0 (once per frame) or a whole multiple of body.fps (" +
+                                        std::to_string(b.fps) + ")"));
+}
+
 // Levenshtein distance: single-character insertions, deletions and substitutions
 std::size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<std::size_t> row(b.size() + 1);
@@ -168,6 +177,9 @@ void visit_fields(B& b, V& v) {
   v(Key{"end_s", "s", "the measured window's end; < 0: the clip's end"}, b.end_s, Range{-1, 1e4});
   v(Key{"walk_in_place", "", "remove the root's horizontal travel"}, b.walk_in_place, Flag{});
   v(Key{"fps", "1/s", "body frames per second of animation"}, b.fps, Range{1, 1000});
+  v(Key{"pose_fps", "1/s", "> 0: the body posed this often, a multiple of fps; 0: once per frame",
+        Hash::kWhenNonzero},
+    b.pose_fps, Range{0, 1e4});
   v(Key{"move_between_frames", "", "each step sees the body at its own time"}, b.move_between_frames, Flag{});
   v(Key{"skin_mm", "mm", "contacts answered this much closer"}, b.skin_mm, Range{0, 1000});
   v(Key{"prepare_ahead", "", "the next frame prepared on a second thread"}, b.prepare_ahead, Flag{});
@@ -330,6 +342,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
                                           std::to_string(1e3 * double(s.collider_options.tol)) +
                                           " mm), or the skin would push every contact out"));
   read_section(section("stop"), s.stop);
+  check_pose_fps(file, s.body);
   return s;
 }
 
@@ -456,6 +469,10 @@ std::string config_hash(const Scene& scene) {
   Fnv1a f;
   f.add(text.data(), text.size());
   return f.hex();
+}
+
+long poses_per_frame(const BodySpec& body) {
+  return body.pose_fps > 0 ? std::max(1L, std::lround(body.pose_fps / body.fps)) : 1;
 }
 
 Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {

@@ -58,6 +58,12 @@ void print_spread(const std::vector<RunResult>& runs) {
               *std::max_element(t.begin(), t.end()));
 }
 
+// ", the body posed N times a frame" where body.pose_fps poses it more than once
+std::string poses_per_frame_note(const RunResult& r) {
+  if (r.collider_updates <= r.frames) return "";
+  return ", the body posed " + std::to_string(r.collider_updates / r.frames) + " times a frame";
+}
+
 void print_summary(const RunArgs& a, const RunResult& r) {
   std::printf("%s / %s: %d vertices (%d query points), body %ld triangles\n", r.scene.c_str(), r.collider.c_str(),
               r.vertices, r.query_points, r.body_triangles);
@@ -83,9 +89,9 @@ void print_summary(const RunArgs& a, const RunResult& r) {
               r.cdr_ms_per_iteration(), r.cs_ms_per_iteration(), r.limit_ms_per_iteration());
   if (r.frames > 0)
     std::printf(
-        "  %ld frames, %.0f steps per frame, %.2f frames/s (skinning %.2f ms, collider update %.2f ms per frame)\n",
+        "  %ld frames, %.0f steps per frame, %.2f frames/s (skinning %.2f ms, collider update %.2f ms per frame%s)\n",
         r.frames, r.steps_per_frame, 1e3 * double(r.frames) / r.animate.wall_ms, r.skinning_ms / double(r.frames),
-        r.collider_update_ms / double(r.frames));
+        r.collider_update_ms / double(r.frames), poses_per_frame_note(r).c_str());
   if (r.frames > 0 && r.collider_queries > 0)
     std::printf("  collider queries: %.1f batches per frame, %.3f ms each (%s)\n",
                 double(r.collider_queries) / double(r.frames), r.collider_query_ms / double(r.collider_queries),

@@ -195,6 +195,9 @@ std::vector<WalkVariant> response_variants() {
   v.push_back({"stable, without Eq. 16", "walk_07_01", "stable", row_names::kWithoutEq16, {"solver.reaction_force=false"}, is_cpu});
   v.push_back(
       {"stable, body held per frame", "walk_07_01", "stable", "/held", {"body.move_between_frames=false"}, is_cpu});
+  // the dress's scene poses the body twice a frame (body.pose_fps): once, the knee passes through the hem on walk_08_02
+  v.push_back({"stable, body posed once per frame", "walk_08_02", "stable", "/posed-per-frame",
+               {"body.animation=walk_08_02", "body.pose_fps=0"}, is_cpu});
   v.push_back(
       {"stable, travelling", "walk_07_01", "stable", "/travel", {"body.walk_in_place=false"}, {"is-cpu", "embree"}});
   return v;
@@ -324,7 +327,8 @@ std::string other_clip_text(const std::vector<SpeedRun>& frontier, const SpeedRu
 
 // the page's opening lines: the paper's frame rates, our fastest row within every limit, the rows that meet them
 std::vector<std::string> summary(const std::vector<SpeedRun>& frontier,
-                                 const std::vector<std::pair<std::string, std::pair<int, int>>>& meeting) {
+                                 const std::vector<std::pair<std::string, std::pair<int, int>>>& meeting,
+                                 const std::optional<SpeedRun>& fastest) {
   const auto& p = paper::kWalkingT2;
   std::vector<std::string> lines{"The paper (walking Table 2): the " + std::string(p[0].product) + " (" +
                                  std::to_string(p[0].vertices) + " vertices) at " + num(p[0].fps, 1) +
@@ -337,6 +341,10 @@ std::vector<std::string> summary(const std::vector<SpeedRun>& frontier,
                 other_clip_text(frontier, *all)
           : std::string("Ours: no speed row of the dress with sleeves meets every limit at every frame, strain "
                         "included (the Speed paragraph says what each misses)."));
+  // a row of another collider or variant that is faster within every limit is named beside the is-cpu headline
+  if (fastest && (!all || fastest->fps > all->fps))
+    lines.back() += " The fastest row of the dress within every limit on walk_07_01, any collider: \"" +
+                    fastest->variant + "\" at " + num(fastest->fps, 1) + " frames/s.";
   std::string rows = "Rows that meet every limit at every frame, strain included:";
   for (std::size_t i = 0; i < meeting.size(); ++i)
     rows += std::string(i ? ";" : "") + " " + meeting[i].first + " " + std::to_string(meeting[i].second.first) +
@@ -411,6 +419,7 @@ struct WalkPage {
   std::vector<SpeedRun> frontier;
   std::vector<std::pair<std::string, std::pair<int, int>>> meeting;  // per garment: rows within every limit, rows
   std::optional<RunResult> speed_run;
+  std::optional<SpeedRun> fastest;  // the dress's fastest row of any collider on walk_07_01 within every limit
   double proxy_mm = 0;  // the simplified body's largest distance from the exact one, where a row simplifies it
 };
 
@@ -468,6 +477,10 @@ void account(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, const 
   ctx.add_run(r, row_names::walking_t2(g.name, c, variant.row_suffix));
   page.meeting.back().second.first += limit_misses(r).empty() ? 1 : 0;
   ++page.meeting.back().second.second;
+  const double rate = r.frames ? 1 / frame_times(r).s : 0;
+  if (i == 1 && variant.clip == "walk_07_01" && limit_misses(r).empty() && (!page.fastest || rate > page.fastest->fps))
+    page.fastest = SpeedRun{variant.label + ", " + c, variant.clip, rate, "", frame_times(r), 100 * r.animate_strain_max,
+                            false};
 }
 
 // every variant and collider on one garment (garment i of the table), and its chart of every frame
@@ -539,8 +552,11 @@ std::string description(const WalkPage& page) {
       "The walk is in place (`body.walk_in_place`: the root's travel removed). "
       "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +
           page.clocks + ".\n\n"
-      "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end, and each "
-      "cloth step within the frame sees the contacts as they were at the step's time, d(t - tau) = d(t) + "
+      "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end (the dress "
+      "twice, `body.pose_fps = 60`: on walk_08_02 a knee moves farther in a frame than half its thickness, passes "
+      "through the hem between two poses and leaves its springs stretched far beyond the limit; the row \"body posed "
+      "once per frame\" measures it), and each "
+      "cloth step within the pose's interval sees the contacts as they were at the step's time, d(t - tau) = d(t) + "
       "(n . v_body) tau (`body.move_between_frames`); points found inside are moved out along the contact normal "
       "(`solver.push_out`, Durupinar Eq. 3); the walking paper's reaction force is on (walking Eq. 16, "
       "`solver.reaction_force`); the body is answered `body.skin_mm` thicker (scenes/walking/*.toml; while it is dressed too), "
@@ -587,7 +603,7 @@ void walking_t2(ExperimentContext& ctx) {
                                : "\nAnimated binary glTF of the walks (12 frames kept, for results/index.html's "
                                  "viewer): " +
                                      page.models + ".\n"),
-      summary(page.frontier, page.meeting));
+      summary(page.frontier, page.meeting, page.fastest));
 }
 
 }  // namespace

@@ -163,6 +163,30 @@ TEST(Runner, MapsOfTheRowsTheClothSpansGiveTheSameRun) {
               rows.collider_update_ms / double(rows.frames), every.collider_update_ms / double(every.frames));
 }
 
+// body.pose_fps: the body posed (the collider updated) that often, the frame's steps shared among the poses; posed
+// once per frame it is the run of pose_fps = 0 bit for bit, posed more often the cloth meets it at other times
+TEST(Runner, PosingTheBodyMoreOftenSharesTheFramesStepsAmongThePoses) {
+  RunOptions quiet;
+  quiet.progress = false;
+  const auto run = [&](double pose_fps) {
+    Scene s = small_tablecloth();
+    s.body.pose_fps = pose_fps;
+    s.body.velocity = Vec3(0, 3, 0);  // thrust up through the cloth: its contacts move with the poses
+    return run_scene(s, quiet);
+  };
+  const RunResult unset = run(0), once = run(60), thrice = run(180);
+  ASSERT_FALSE(unset.divergence || once.divergence || thrice.divergence);
+  EXPECT_EQ(unset.collider_updates, unset.frames);
+  EXPECT_EQ(thrice.collider_updates, 3 * thrice.frames);
+  EXPECT_EQ(thrice.frames, unset.frames);
+  EXPECT_EQ(thrice.steps_per_frame, unset.steps_per_frame);
+  EXPECT_EQ(thrice.animate.iterations, unset.animate.iterations);
+  expect_same_cloth(once, unset);
+  EXPECT_NE(0, std::memcmp(thrice.mesh.positions.data(), unset.mesh.positions.data(),
+                           sizeof(Real) * unset.mesh.positions.size()));
+  EXPECT_EQ(result_row(thrice, "sphere").at("poses_per_frame").get<double>(), 3.0);
+}
+
 // body.prepare_ahead: the next frame skinned and its maps drawn on a second thread while the cloth steps through this
 // one; the same run bit for bit (lead-in and measured window), and the run says it used the second thread
 TEST(Runner, FramesPreparedAheadGiveTheSameRun) {
@@ -175,6 +199,12 @@ TEST(Runner, FramesPreparedAheadGiveTheSameRun) {
   EXPECT_EQ(1, serial.threads);
   expect_same_cloth(ahead, serial);
   EXPECT_EQ(ahead.final_body.positions, serial.final_body.positions);
+  // with the body posed twice a frame (body.pose_fps) the worker prepares each pose
+  const RunResult ahead2 = short_skirt_walk({"body.prepare_ahead=true", "body.pose_fps=60"});
+  const RunResult serial2 = short_skirt_walk({"body.prepare_ahead=false", "body.pose_fps=60"});
+  ASSERT_FALSE(ahead2.divergence);
+  EXPECT_EQ(2 * serial2.frames, serial2.collider_updates);
+  expect_same_cloth(ahead2, serial2);
 }
 
 // a garment placed half inside the body is named on stderr before anything runs; the shipped placement is not

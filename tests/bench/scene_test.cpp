@@ -205,6 +205,19 @@ TEST(Scene, BodySkinIsReadAndMustStayBelowTheHitDistance) {
   EXPECT_NE(error_of("[body]\nskin_mm = -1\n").find("body.skin_mm"), std::string::npos);
 }
 
+TEST(Scene, BodyPoseFpsIsZeroOrAWholeMultipleOfFps) {
+  const Scene s = parse_scene("[body]\nfps = 30\npose_fps = 90\n", "s.toml");
+  EXPECT_EQ(poses_per_frame(s.body), 3);
+  EXPECT_EQ(poses_per_frame(parse_scene("", "s.toml").body), 1);
+  EXPECT_EQ(config_text(parse_scene("", "s.toml")).find("pose_fps"), std::string::npos) << "unset, it is not hashed";
+  EXPECT_NE(config_hash(s), config_hash(parse_scene("[body]\nfps = 30\n", "s.toml")));
+  for (const char* bad : {"45", "20", "-30"}) {
+    const std::string e = error_of(std::string("[body]\nfps = 30\npose_fps = ") + bad + "\n");
+    EXPECT_NE(e.find("body.pose_fps"), std::string::npos) << bad << ": " << e;
+  }
+  EXPECT_NE(error_of("[body]\nfps = 30\npose_fps = 45\n").find("whole multiple of body.fps"), std::string::npos);
+}
+
 // jittered placements for claims' spread
 TEST(Scene, GarmentJitterAndSeedAreReadAndHashed) {
   const std::string text = "[[garment]]\nfile = \"a.pattern\"\njitter_mm = 5\nseed = 3\n";

@@ -59,6 +59,7 @@ struct RunResult {
   double steps_per_frame = 0;
   double skinning_ms = 0;       ///< all body frame evaluations (LBS)
   double collider_update_ms = 0;///< all collider updates (re-render / refit)
+  long collider_updates = 0;    ///< the measured window's body poses (Collider::update_body calls; body.pose_fps)
   long collider_queries = 0;    ///< the measured animation's query batches (Collider::query calls)
   double collider_query_ms = 0; ///< their time (is-egl: the points' upload and the answers' read-back included)
   double setup_ms = 0;          ///< collider set-up (maps rendered / BVH built)

@@ -20,6 +20,9 @@ struct BodySpec {
   double end_s = -1;                  ///< < 0: the clip's end
   bool walk_in_place = true;          ///< remove the root's horizontal travel
   double fps = 60;                    ///< body frames per second of animation (collider updates)
+  double pose_fps = 0;                ///< > 0: the body is posed (skinned, the colliders updated) this often, a
+                                      ///< whole multiple of fps, so a fast limb does not pass through the cloth
+                                      ///< between two poses; 0: once per frame
   bool move_between_frames = true;    ///< each cloth step sees the body at its own time (BodyBetweenFrames),
                                       ///< not the frame's end pose
   bool prepare_ahead = false;         ///< the next frame's body (skinning, the collider's maps) is prepared on a
@@ -74,6 +77,9 @@ struct Scene {
 
 /// Reads a scene file; `overrides` are "section.key=value" (TOML value syntax, bare words as
 /// strings; "garment.key" applies to every garment). Throws InputError naming file:line.
+/// The body's poses per animation frame: pose_fps / fps (1 when pose_fps is 0).
+long poses_per_frame(const BodySpec& body);
+
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 /// As load_scene, from text (`name` is used in messages and to resolve relative paths).
 Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides = {});
