@@ -25,9 +25,10 @@ namespace {
 void check_pose_fps(const std::string& file, const BodySpec& b) {
   const double ratio = b.pose_fps / b.fps;
   if (b.pose_fps == 0 || (ratio >= 1 && std::abs(ratio - std::round(ratio)) < 1e-9)) return;
-  throw InputError(located(file, 0, "body.pose_fps = " + std::to_string(b.pose_fps) +
-                                        ": must be 0 (once per frame) or a whole multiple of body.fps (" +
-                                        std::to_string(b.fps) + ")"));
+  std::ostringstream msg;
+  msg << "body.pose_fps = " << b.pose_fps << ": must be 0 (once per frame) or a whole multiple of body.fps (" << b.fps
+      << ")";
+  throw InputError(located(file, 0, msg.str()));
 }
 
 // Levenshtein distance: single-character insertions, deletions and substitutions
@@ -177,8 +178,7 @@ void visit_fields(B& b, V& v) {
   v(Key{"end_s", "s", "the measured window's end; < 0: the clip's end"}, b.end_s, Range{-1, 1e4});
   v(Key{"walk_in_place", "", "remove the root's horizontal travel"}, b.walk_in_place, Flag{});
   v(Key{"fps", "1/s", "body frames per second of animation"}, b.fps, Range{1, 1000});
-  v(Key{"pose_fps", "1/s", "> 0: the body posed this often, a multiple of fps; 0: once per frame",
-        Hash::kWhenNonzero},
+  v(Key{"pose_fps", "1/s", "> 0: the body posed this often, a multiple of fps; 0: once per frame", Hash::kWhenNonzero},
     b.pose_fps, Range{0, 1e4});
   v(Key{"move_between_frames", "", "each step sees the body at its own time"}, b.move_between_frames, Flag{});
   v(Key{"skin_mm", "mm", "contacts answered this much closer"}, b.skin_mm, Range{0, 1000});

@@ -192,12 +192,21 @@ std::vector<WalkVariant> response_variants() {
   const std::vector<std::string> is_cpu{"is-cpu"};
   std::vector<WalkVariant> v;
   v.push_back({"stable, no push-out", "walk_07_01", "stable", "/nopush", {"solver.push_out=false"}, is_cpu});
-  v.push_back({"stable, without Eq. 16", "walk_07_01", "stable", row_names::kWithoutEq16, {"solver.reaction_force=false"}, is_cpu});
+  v.push_back({"stable, without Eq. 16",
+               "walk_07_01",
+               "stable",
+               row_names::kWithoutEq16,
+               {"solver.reaction_force=false"},
+               is_cpu});
   v.push_back(
       {"stable, body held per frame", "walk_07_01", "stable", "/held", {"body.move_between_frames=false"}, is_cpu});
   // the dress's scene poses the body twice a frame (body.pose_fps): once, the knee passes through the hem on walk_08_02
-  v.push_back({"stable, body posed once per frame", "walk_08_02", "stable", "/posed-per-frame",
-               {"body.animation=walk_08_02", "body.pose_fps=0"}, is_cpu});
+  v.push_back({"stable, body posed once per frame",
+               "walk_08_02",
+               "stable",
+               "/posed-per-frame",
+               {"body.animation=walk_08_02", "body.pose_fps=0"},
+               is_cpu});
   v.push_back(
       {"stable, travelling", "walk_07_01", "stable", "/travel", {"body.walk_in_place=false"}, {"is-cpu", "embree"}});
   return v;
@@ -219,8 +228,8 @@ std::string worst_mean(const RunResult& r, double FrameSample::*field, int digit
 // a garment is dressed when its seams were sewn before the measured walk starts
 bool dressed(const RunResult& r) { return r.window_seam_gap_mm <= kAccuracyLimits.seam_gap_mm; }
 
-// what a run misses of inside, depth and crossings at every frame, the seam gap, and strain `with_strain` ("a; b"), empty when it
-// meets them
+// what a run misses of inside, depth and crossings at every frame, the seam gap, and strain `with_strain` ("a; b"),
+// empty when it meets them
 std::string accuracy_misses(const RunResult& r, bool with_strain = false) {
   std::string misses;
   for (const std::string& m : limit_misses(r, with_strain)) misses += (misses.empty() ? "" : "; ") + m;
@@ -240,7 +249,12 @@ FrameTimes frame_times(const RunResult& r) {
 // the row of one run: timings only for a dressed garment that did not diverge
 std::vector<std::string> walk_row(const std::string& product, const WalkVariant& v, const std::string& collider,
                                   const RunResult& r, const paper::WalkingT2Row& p) {
-  std::vector<std::string> row{product, v.label, v.clip, collider, std::to_string(r.vertices), std::to_string(r.frames),
+  std::vector<std::string> row{product,
+                               v.label,
+                               v.clip,
+                               collider,
+                               std::to_string(r.vertices),
+                               std::to_string(r.frames),
                                num(r.steps_per_frame, 0) + " at " + num(1e3 * r.dt_s, 3) + " ms"};
   // no measured frame: the run diverged while dressing or in the lead-in
   if (r.frames == 0 || !dressed(r)) {
@@ -274,8 +288,8 @@ struct SpeedRun {
   bool strain_misses;  // over threshold + 1 % at some frame
 };
 
-// the fastest of the runs on walk_07_01 within inside, depth and crossings at every frame and the seam gap, and with `strain` within
-// its limit too (nullptr: none)
+// the fastest of the runs on walk_07_01 within inside, depth and crossings at every frame and the seam gap, and with
+// `strain` within its limit too (nullptr: none)
 const SpeedRun* fastest_within(const std::vector<SpeedRun>& runs, bool strain = false) {
   const SpeedRun* best = nullptr;
   for (const SpeedRun& s : runs)
@@ -290,8 +304,8 @@ std::string speed_run_text(const SpeedRun& s) {
          (s.strain_misses ? " over its limit" : "") + (s.misses.empty() ? "" : ", missing " + s.misses) + ")";
 }
 
-// the fastest of those runs on walk_07_01 within inside, depth, crossings and the seam gap, those that pass 100 frames/s with what
-// they miss, and the same settings on walk_08_02
+// the fastest of those runs on walk_07_01 within inside, depth, crossings and the seam gap, those that pass 100
+// frames/s with what they miss, and the same settings on walk_08_02
 std::string speed_frontier(const std::vector<SpeedRun>& runs) {
   const SpeedRun* best = fastest_within(runs);
   std::string fast, other_clip;
@@ -306,7 +320,8 @@ std::string speed_frontier(const std::vector<SpeedRun>& runs) {
          "prepared ahead, and by the projective solve) and prepared ahead at the papers' clock (looser limit passes, "
          "fewer surfaces and pixels, the colliders' body simplified, one limit pass with the papers' own image "
          "space): " +
-         (best ? "the fastest within inside, depth and crossings at every frame and the seam gap is " + speed_run_text(*best)
+         (best ? "the fastest within inside, depth and crossings at every frame and the seam gap is " +
+                     speed_run_text(*best)
                : std::string("none stays within inside, depth and crossings at every frame and the seam gap")) +
          "; " + (best && best->fps >= 100 ? "also " : "") +
          "at 100 frames/s or more: " + (fast.empty() ? std::string("none") : fast) + "." +
@@ -379,13 +394,14 @@ std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const
                                settings(*all) + ")." + other_clip(*all) + " "
                          : "no row here meets every limit at every frame, strain included, so none is a headline; ";
   if (best && best != all)
-    lead += std::string(all ? "The" : "the") + " fastest within inside, depth and crossings at every frame and the seam gap runs at " +
-            num(best->fps, 1) +
+    lead += std::string(all ? "The" : "the") +
+            " fastest within inside, depth and crossings at every frame and the seam gap runs at " + num(best->fps, 1) +
             " frames/s (" + settings(*best) + (best->strain_misses ? ", over its limit" : "") + "); ";
   return "**Speed** (the dress with sleeves, " + std::to_string(r.vertices) +
          " vertices, is-cpu, walk_07_01, skinning, maps and cloth, the papers' clock with walking Eq. 5's limit and "
          "the next frame prepared on a second thread; " +
-         num(p.fps, 1) + " frames/s in the paper): " + lead + "the tight settings (\"papers' clock, Eq. 5 limit, next " +
+         num(p.fps, 1) + " frames/s in the paper): " + lead +
+         "the tight settings (\"papers' clock, Eq. 5 limit, next " +
          "frame prepared ahead\": passes to 0.05 mm, six views of five surfaces, the exact body) run at " +
          num(1 / f.s, 1) + " frames/s, " +
          (misses.empty() ? "meeting every limit at every frame" : "missing the limits: " + misses) +
@@ -429,8 +445,7 @@ void write_pictures(ExperimentContext& ctx, const WalkGarment& g, double fps,
                     const std::vector<SequenceFrame>& sequence, const RunResult& r, WalkPage& page) {
   const std::string stem = std::string("pictures/walking-t2-") + g.name;
   write_sequence(ctx.pictures(), sequence, r, ctx.path(stem + "/" + stem.substr(9)));
-  const bool video =
-      make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"), fps);
+  const bool video = make_video(ctx.path(stem + "/" + stem.substr(9) + "-frame%03d.png"), ctx.path(stem + ".mp4"), fps);
   page.media += "- " + std::string(g.product) + ": [end state](" + stem + ".png), " + std::to_string(sequence.size()) +
                 " frames in `" + stem + "/`" +
                 (video ? ", [video](" + stem + ".mp4)" : std::string(", no video (ffmpeg absent)")) + "\n";
@@ -479,8 +494,8 @@ void account(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, const 
   ++page.meeting.back().second.second;
   const double rate = r.frames ? 1 / frame_times(r).s : 0;
   if (i == 1 && variant.clip == "walk_07_01" && limit_misses(r).empty() && (!page.fastest || rate > page.fastest->fps))
-    page.fastest = SpeedRun{variant.label + ", " + c, variant.clip, rate, "", frame_times(r), 100 * r.animate_strain_max,
-                            false};
+    page.fastest =
+        SpeedRun{variant.label + ", " + c, variant.clip, rate, "", frame_times(r), 100 * r.animate_strain_max, false};
 }
 
 // every variant and collider on one garment (garment i of the table), and its chart of every frame
@@ -525,64 +540,74 @@ void walk_garment(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, W
 
 // the page's text before the table: what runs, how the body moves, what each ablation row changes
 std::string description(const WalkPage& page) {
-  return
-      "Garments dressed on the bind pose (t = 0, sew + drape with `collider.dress_with`), carried through the clip's "
-      "lead-in (0 - 1 s), then measured over **two seconds of walking** (1 - 3 s, about two gait cycles) in place, on "
-      "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
-      "animation time and the cloth takes `steps/frame` steps of dt per frame, in our stable regime (its limit the "
-      "regime's default: walking Eq. 5, 8 passes, run again after the collision response; results/limiters.md "
-      "measures the alternatives, Eq. 6 and fewer passes among them) and at the papers' "
-      "clock (`solver.regime = papers`: dt 5 ms, equal point masses, soft springs, 32 limit passes; see dressing-t1; "
-      "the passes here stop once they change no point by more than " + std::string(kPapersTolerance) +
-          " mm, `solver.limit_tolerance_mm`) with the walking "
-      "paper's averaging limit (Eq. 5, `solver.limit = velocity`): with its directional limit (Eq. 6, the paper's "
-      "choice for moving bodies, and the regime's default) the dress with sleeves diverges at that clock within the "
-      "first frames of the walk (the ablation row: that limit's rear-catches-up rule does not keep momentum), "
-      "while Eq. 5's mass-weighted mean keeps it; the rows \"projection limit\" hold the strain by a fast projection of "
-      "the structural springs instead (Goldenthal et al. 2007, beyond the papers; results/limiters.md); the rows "
-      "\"projective solve\" keep the stable regime's springs and masses and step them by backward Euler in "
-      "local/global iterations on a matrix factored once (Liu et al. 2013, beyond the papers; `solver.integrator = "
-      "projective`, 2 iterations) at 20 steps of 1.67 ms a frame instead of about 200 explicit ones. s/frame = wall time of the animation phase "
-      "per frame: skinning (LBS, our analogue of the paper's reading the body file), map re-render, BVH refit or "
-      "(vdb) the body's signed distance field voxelised again, and cloth (CD&R + CS); vdb runs half a second in the "
-      "stable regime only, its per-frame voxelisation costing seconds. The paper's figures include rendering the "
-      "scene on screen, ours do not. The exact oracle measures **every frame** (outside s/frame): the worst and the "
-      "mean frame's inside and crossings, the worst frame's depth; the verdict counts the worst frame. A garment whose "
-      "seams are still open when the walk starts (gap > 2 mm) gets no timings: it is listed as not dressed. "
-      "The walk is in place (`body.walk_in_place`: the root's travel removed). "
-      "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +
-          page.clocks + ".\n\n"
-      "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end (the dress "
-      "twice, `body.pose_fps = 60`: on walk_08_02 a knee moves farther in a frame than half its thickness, passes "
-      "through the hem between two poses and leaves its springs stretched far beyond the limit; the row \"body posed "
-      "once per frame\" measures it), and each "
-      "cloth step within the pose's interval sees the contacts as they were at the step's time, d(t - tau) = d(t) + "
-      "(n . v_body) tau (`body.move_between_frames`); points found inside are moved out along the contact normal "
-      "(`solver.push_out`, Durupinar Eq. 3); the walking paper's reaction force is on (walking Eq. 16, "
-      "`solver.reaction_force`); the body is answered `body.skin_mm` thicker (scenes/walking/*.toml; while it is dressed too), "
-      "which keeps the straight springs between resting vertices from cutting the curved surface they lie on (by up "
-      "to L^2 / 8R, a spring of length L on a surface of radius R); image space renders the cube of six views "
-      "(`collider.views = 6`): with the papers' front/back pair the swinging hands hide the hips and the cloth "
-      "caught between is pushed the wrong way (the ablation row runs the papers' image space whole: the front/back "
-      "pair, one surface per camera, the z comparison of walking Eq. 12 on 8-bit maps); and each pair peels five "
-      "surfaces along its axis (`collider.layers = 5`, depth peeling; with the far camera's nearest one, the six a "
-      "line through both arms and the torso crosses): with one surface per camera the six views make a visual "
-      "hull, and a sleeve point inside the arm next to the armpit, hidden from the side cameras by the "
-      "torso and the other arm and from the rest by the arm itself, was answered by the arm's front or back and "
-      "stayed inside. Each of these has an ablation row (is-cpu, walk_07_01). Image space draws and "
-      "reads back only the map rows that the cloth's bounding box, grown by `collider.query_margin_mm` (100 mm), "
-      "spans, since a frame's queries come from there; the row \"maps of every row\" (is-gl, is-cpu) draws them "
-      "all: the same motion, the maps' cost beside. The rows \"next frame prepared ahead (2 threads)\" "
-      "(`body.prepare_ahead`) skin the next frame and draw its maps on a second thread while the cloth steps through "
-      "this one (the body's motion is prescribed): the same motion bit for bit, s/frame is then wall time with two "
-      "threads, and skinning and maps ms/frame are the second thread's (is-cpu only: llvmpipe already draws is-gl's "
-      "maps on both cores of this machine, and drawn beside the cloth they took longer than the cloth saved). The "
-      "rows \"the colliders' body simplified\" (`body.collision_triangles`) hand the colliders a copy of the body "
-      "with fewer triangles (edge collapses that keep some of its own vertices and their skin; every exact vertex "
-      "within " +
-          num(page.proxy_mm, 1) +
-          " mm of the copy) while the oracle measures against the exact body. And "
-          "\"travelling\" keeps the root's motion (the maps follow the body).\n\n";
+  return "Garments dressed on the bind pose (t = 0, sew + drape with `collider.dress_with`), carried through the "
+         "clip's "
+         "lead-in (0 - 1 s), then measured over **two seconds of walking** (1 - 3 s, about two gait cycles) in place, "
+         "on "
+         "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
+         "animation time and the cloth takes `steps/frame` steps of dt per frame, in our stable regime (its limit the "
+         "regime's default: walking Eq. 5, 8 passes, run again after the collision response; results/limiters.md "
+         "measures the alternatives, Eq. 6 and fewer passes among them) and at the papers' "
+         "clock (`solver.regime = papers`: dt 5 ms, equal point masses, soft springs, 32 limit passes; see "
+         "dressing-t1; "
+         "the passes here stop once they change no point by more than " +
+         std::string(kPapersTolerance) +
+         " mm, `solver.limit_tolerance_mm`) with the walking "
+         "paper's averaging limit (Eq. 5, `solver.limit = velocity`): with its directional limit (Eq. 6, the paper's "
+         "choice for moving bodies, and the regime's default) the dress with sleeves diverges at that clock within the "
+         "first frames of the walk (the ablation row: that limit's rear-catches-up rule does not keep momentum), "
+         "while Eq. 5's mass-weighted mean keeps it; the rows \"projection limit\" hold the strain by a fast "
+         "projection of "
+         "the structural springs instead (Goldenthal et al. 2007, beyond the papers; results/limiters.md); the rows "
+         "\"projective solve\" keep the stable regime's springs and masses and step them by backward Euler in "
+         "local/global iterations on a matrix factored once (Liu et al. 2013, beyond the papers; `solver.integrator = "
+         "projective`, 2 iterations) at 20 steps of 1.67 ms a frame instead of about 200 explicit ones. s/frame = wall "
+         "time of the animation phase "
+         "per frame: skinning (LBS, our analogue of the paper's reading the body file), map re-render, BVH refit or "
+         "(vdb) the body's signed distance field voxelised again, and cloth (CD&R + CS); vdb runs half a second in the "
+         "stable regime only, its per-frame voxelisation costing seconds. The paper's figures include rendering the "
+         "scene on screen, ours do not. The exact oracle measures **every frame** (outside s/frame): the worst and the "
+         "mean frame's inside and crossings, the worst frame's depth; the verdict counts the worst frame. A garment "
+         "whose "
+         "seams are still open when the walk starts (gap > 2 mm) gets no timings: it is listed as not dressed. "
+         "The walk is in place (`body.walk_in_place`: the root's travel removed). "
+         "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +
+         page.clocks +
+         ".\n\n"
+         "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end (the dress "
+         "twice, `body.pose_fps = 60`: on walk_08_02 a knee moves farther in a frame than half its thickness, passes "
+         "through the hem between two poses and leaves its springs stretched far beyond the limit; the row \"body "
+         "posed "
+         "once per frame\" measures it), and each "
+         "cloth step within the pose's interval sees the contacts as they were at the step's time, d(t - tau) = d(t) + "
+         "(n . v_body) tau (`body.move_between_frames`); points found inside are moved out along the contact normal "
+         "(`solver.push_out`, Durupinar Eq. 3); the walking paper's reaction force is on (walking Eq. 16, "
+         "`solver.reaction_force`); the body is answered `body.skin_mm` thicker (scenes/walking/*.toml; while it is "
+         "dressed too), "
+         "which keeps the straight springs between resting vertices from cutting the curved surface they lie on (by up "
+         "to L^2 / 8R, a spring of length L on a surface of radius R); image space renders the cube of six views "
+         "(`collider.views = 6`): with the papers' front/back pair the swinging hands hide the hips and the cloth "
+         "caught between is pushed the wrong way (the ablation row runs the papers' image space whole: the front/back "
+         "pair, one surface per camera, the z comparison of walking Eq. 12 on 8-bit maps); and each pair peels five "
+         "surfaces along its axis (`collider.layers = 5`, depth peeling; with the far camera's nearest one, the six a "
+         "line through both arms and the torso crosses): with one surface per camera the six views make a visual "
+         "hull, and a sleeve point inside the arm next to the armpit, hidden from the side cameras by the "
+         "torso and the other arm and from the rest by the arm itself, was answered by the arm's front or back and "
+         "stayed inside. Each of these has an ablation row (is-cpu, walk_07_01). Image space draws and "
+         "reads back only the map rows that the cloth's bounding box, grown by `collider.query_margin_mm` (100 mm), "
+         "spans, since a frame's queries come from there; the row \"maps of every row\" (is-gl, is-cpu) draws them "
+         "all: the same motion, the maps' cost beside. The rows \"next frame prepared ahead (2 threads)\" "
+         "(`body.prepare_ahead`) skin the next frame and draw its maps on a second thread while the cloth steps "
+         "through "
+         "this one (the body's motion is prescribed): the same motion bit for bit, s/frame is then wall time with two "
+         "threads, and skinning and maps ms/frame are the second thread's (is-cpu only: llvmpipe already draws is-gl's "
+         "maps on both cores of this machine, and drawn beside the cloth they took longer than the cloth saved). The "
+         "rows \"the colliders' body simplified\" (`body.collision_triangles`) hand the colliders a copy of the body "
+         "with fewer triangles (edge collapses that keep some of its own vertices and their skin; every exact vertex "
+         "within " +
+         num(page.proxy_mm, 1) +
+         " mm of the copy) while the oracle measures against the exact body. And "
+         "\"travelling\" keeps the root's motion (the maps follow the body).\n\n";
 }
 
 void walking_t2(ExperimentContext& ctx) {
@@ -595,10 +620,10 @@ void walking_t2(ExperimentContext& ctx) {
       description(page) + page.table.str() + "\n" +
           (page.speed_run ? speed_figure(*page.speed_run, paper::kWalkingT2[1], page.frontier) : std::string()) +
           page.charts +
-          (page.media.empty() ? std::string()
-                              : "\nPictures of the is-cpu runs (front view; " + ctx.pictures().name() +
-                                    "; frames are copied during the run and drawn after it, outside s/frame):\n\n" +
-                                    page.media) +
+          (page.media.empty()
+               ? std::string()
+               : "\nPictures of the is-cpu runs (front view; " + ctx.pictures().name() +
+                     "; frames are copied during the run and drawn after it, outside s/frame):\n\n" + page.media) +
           (page.models.empty() ? std::string()
                                : "\nAnimated binary glTF of the walks (12 frames kept, for results/index.html's "
                                  "viewer): " +

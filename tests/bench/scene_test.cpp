@@ -215,7 +215,9 @@ TEST(Scene, BodyPoseFpsIsZeroOrAWholeMultipleOfFps) {
     const std::string e = error_of(std::string("[body]\nfps = 30\npose_fps = ") + bad + "\n");
     EXPECT_NE(e.find("body.pose_fps"), std::string::npos) << bad << ": " << e;
   }
-  EXPECT_NE(error_of("[body]\nfps = 30\npose_fps = 45\n").find("whole multiple of body.fps"), std::string::npos);
+  const std::string e = error_of("[body]\nfps = 30\npose_fps = 45\n");
+  EXPECT_NE(e.find("pose_fps = 45: must be 0 (once per frame) or a whole multiple of body.fps (30)"), std::string::npos)
+      << e;
 }
 
 // jittered placements for claims' spread
