@@ -95,14 +95,15 @@ bool advance_pose(Animation& a, FramePass& pass, double t, double t_next, long s
   return alive;
 }
 
-// frame `f` (from 1) of `frames` after `t0`: its poses, the last at the frame's time
-void advance_frame(Animation& a, FramePass& pass, double t0, long f, long frames) {
+// frame `f` (from 1) of `frames` after `t0`: its poses, the last at the frame's time, which it returns
+double advance_frame(Animation& a, FramePass& pass, double t0, long f, long frames) {
   const long n = a.plan.poses, last = frames * n;
   const auto time = [&](long k) { return t0 + double(k) * a.plan.pose_dt; };
   for (long j = 0; j < n && a.alive; ++j) {
     const long k = (f - 1) * n + j + 1;
     a.alive = advance_pose(a, pass, time(k), k < last ? time(k + 1) : 0, a.plan.pose_steps(j));
   }
+  return time(f * n);
 }
 
 // the lead-in: dress_at_s -> start_s with the dressing collider, not measured
@@ -132,8 +133,7 @@ void look_at_frame(Animation& a, long f, double t, RunResult& r) {
 void measured_window(Animation& a, FramePass& pass, Outside& outside, RunResult& r) {
   const long frames = a.plan.frames;
   for (long f = 1; f <= frames && a.alive; ++f) {
-    const double t = a.run.source.start() + double(f * a.plan.poses) * a.plan.pose_dt;
-    advance_frame(a, pass, a.run.source.start(), f, frames);
+    const double t = advance_frame(a, pass, a.run.source.start(), f, frames);
     r.prepared_frames += pass.ahead && f < frames && pass.ahead->prepared;
     ++r.frames;
     Stopwatch wall;

@@ -75,11 +75,11 @@ struct Scene {
   StopRule stop;
 };
 
-/// Reads a scene file; `overrides` are "section.key=value" (TOML value syntax, bare words as
-/// strings; "garment.key" applies to every garment). Throws InputError naming file:line.
 /// The body's poses per animation frame: pose_fps / fps (1 when pose_fps is 0).
 long poses_per_frame(const BodySpec& body);
 
+/// Reads a scene file; `overrides` are "section.key=value" (TOML value syntax, bare words as
+/// strings; "garment.key" applies to every garment). Throws InputError naming file:line.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 /// As load_scene, from text (`name` is used in messages and to resolve relative paths).
 Scene parse_scene(const std::string& text, const std::string& name, const std::vector<std::string>& overrides = {});
