@@ -303,9 +303,8 @@ void limiters(ExperimentContext& ctx) {
           cheapest(rows) +
           "\nThe walking paper's advice (section 3.2: Eq. 5, `velocity`, on a static body, Eq. 6, `directional`, on "
           "a moving one) beside this run, at the papers' clock with 32 passes (the regime's default is `directional` "
-          "on both bodies; walking-t2's rows at that clock run `velocity`, its stable rows `impulses`, 2 passes, again "
-          "after the response, and the walking scenes hold the stable regime's strain with its default, `velocity`, "
-          "8 passes, again after the response):\n\n" +
+          "on both bodies; walking-t2's rows at that clock run `velocity`, and the walking scenes hold the stable "
+          "regime's strain with its default, `velocity`, 8 passes, again after the response):\n\n" +
           advice(rows) + "\n" + t.str() + "\n![chart](limiters.png)\n",
       summary(rows, cases.size()));
 }
