@@ -109,6 +109,16 @@ TEST(Report, LimitMissesNameEachLimitMissed) {
   EXPECT_EQ(limit_misses(r), std::vector<std::string>{"diverged"});
 }
 
+TEST(Report, AWalkThatStartsWithItsSeamsOpenMissesTheSeamGap) {
+  // the seams closed by the end of the walk, open when its measured window started: the garment was not dressed
+  RunResult r;
+  r.seam_gap_max_mm = 0.0;
+  r.window_seam_gap_mm = 2.8;
+  EXPECT_EQ(limit_misses(r), std::vector<std::string>{"seam gap 2.8 mm > 2 mm"});
+  r.window_seam_gap_mm = 1.5;
+  EXPECT_TRUE(limit_misses(r).empty());
+}
+
 TEST(Report, ResultDocumentCarriesTheMachineContext) {
   const json rows = json::array({json{{"name", "a"}}});
   const json doc = result_document(rows);
