@@ -35,6 +35,16 @@ void add_to_edges(const Panel& p, const Vec2d& q, int v, std::vector<std::vector
   }
 }
 
+// Where an inside node nearer the outline than half a spacing sits: moved straight away from the outline to half a
+// spacing from it, where that takes it farther from the outline (a strip narrower than a spacing keeps it). The
+// ring vertex snapped onto the outline beside it is then joined to it by a spring of at least half a spacing; a
+// shorter one (a sliver) takes a millimetre of error as a large strain.
+Vec2d clear_of_outline(const std::vector<Vec2d>& outline, const Vec2d& q, const Closest& c, double h) {
+  if (!(c.dist < 0.5 * h)) return q;
+  const Vec2d moved = c.point + 0.5 * h / c.dist * (q - c.point);
+  return closest_on_outline(outline, moved).dist > c.dist && inside(outline, moved) ? moved : q;
+}
+
 // Grid nodes inside the outline, and the ring around them snapped onto the outline.
 void place_grid_vertices(const Panel& p, double h, PanelGrid& g, std::vector<int>& id, int& nx, int& ny) {
   Vec2d lo = p.outline[0], hi = p.outline[0];
@@ -48,10 +58,10 @@ void place_grid_vertices(const Panel& p, double h, PanelGrid& g, std::vector<int
   const Vec2d origin = 0.5 * (lo + hi) - 0.5 * h * Vec2d(nx - 1, ny - 1);
   auto node = [&](int i, int j) -> Vec2d { return origin + h * Vec2d(i, j); };
   id.assign(static_cast<std::size_t>(nx * ny), -1);
-  // inside nodes farther than h/4 from the outline are kept as they are; nodes on the outline (within
-  // rounding: a spacing that divides a straight edge's position) are kept too, as boundary vertices,
-  // whatever the inside test says there. The ring below would miss such a node at a corner: its
-  // 4-neighbours lie on the outline too, none of them an inside node
+  // inside nodes farther than h/4 from the outline are kept (those nearer than h/2 moved to h/2 where they can
+  // be: clear_of_outline); nodes on the outline (within rounding: a spacing that divides a straight edge's
+  // position) are kept too, as boundary vertices, whatever the inside test says there. The ring below would
+  // miss such a node at a corner: its 4-neighbours lie on the outline too, none of them an inside node
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const Vec2d q = node(i, j);
@@ -59,7 +69,7 @@ void place_grid_vertices(const Panel& p, double h, PanelGrid& g, std::vector<int
       const bool on = c.dist <= kOnOutline * h;
       if (!on && !(c.dist > 0.25 * h && inside(p.outline, q))) continue;
       id[static_cast<std::size_t>(j * nx + i)] = static_cast<int>(g.uv.size());
-      g.uv.push_back(on ? c.point : q);
+      g.uv.push_back(on ? c.point : clear_of_outline(p.outline, q, c, h));
       g.boundary.push_back(on ? 1 : 0);
       if (on) add_to_edges(p, c.point, id[static_cast<std::size_t>(j * nx + i)], g.edge_vertices);
     }

@@ -150,6 +150,35 @@ TEST(Garment, CellsCoverThePanelUpToItsOutline) {
   }
 }
 
+TEST(Garment, NoStructuralSpringFromTheOutlineInwardIsShorterThanHalfASpacing) {
+  // a slanted side and a round panel cut the grid at every offset: the inside nodes nearest the outline stand
+  // half a spacing off it, so the ring snapped onto the outline joins them by springs of at least that. Without
+  // it they stood from a quarter of a spacing off it, and a millimetre of error on those springs was a large strain
+  Pattern slanted = two_panel(40, 50);
+  slanted.panels[0].outline[2] = Vec2d(31, 50);
+  Pattern round;
+  round.name = "disc";
+  Panel disc;
+  disc.name = "disc";
+  for (int k = 0; k < 40; ++k)
+    disc.outline.push_back(20 * Vec2d(std::cos(2 * M_PI * k / 40), std::sin(2 * M_PI * k / 40)));
+  disc.edge_begin = {0};
+  round.panels = {disc};
+  for (const Pattern* pat : {&slanted, &round})
+    for (double spacing : {1.7, 2.3, 3.1}) {
+      const MeshedPattern m = mesh_pattern(*pat, spacing);
+      double shortest = 1e9;
+      for (Eigen::Index s = 0; s < m.mesh.springs.cols(); ++s) {
+        const auto a = static_cast<std::size_t>(m.mesh.springs(0, s)), b = static_cast<std::size_t>(m.mesh.springs(1, s));
+        if (m.mesh.kind[static_cast<std::size_t>(s)] == SpringKind::kStructural && m.boundary[a] != m.boundary[b])
+          shortest = std::min(shortest, 100 * double(m.mesh.rest_length[s]));
+      }
+      std::printf("[ inward  ] %s, spacing %.1f cm: shortest spring from the outline inward %.3f spacings\n",
+                  pat->name.c_str(), spacing, shortest / spacing);
+      EXPECT_GE(shortest, (0.5 - 1e-4) * spacing) << pat->name << ", spacing " << spacing;
+    }
+}
+
 TEST(Garment, RejectsBadPatterns) {
   Pattern pat = two_panel(40, 50);
   pat.seams.push_back(pat.seams[0]);
