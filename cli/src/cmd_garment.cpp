@@ -167,6 +167,7 @@ std::vector<std::string> seam_edges(const Pattern& pat) {
 
 nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const MeshedPattern& m,
                        const std::vector<PanelInfo>& infos) {
+  const Slivers short_ones = slivers(m);
   nlohmann::json panels = nlohmann::json::array();
   for (const auto& p : infos)
     panels.push_back({{"name", p.name},
@@ -186,7 +187,7 @@ nlohmann::json to_json(const GarmentOptions& o, const Pattern& pat, const Meshed
             {"shear", m.mesh.count(SpringKind::kShear)},
             {"flexion", m.mesh.count(SpringKind::kFlexion)}}},
           {"shortest_structural_cm", 100 * double(m.mesh.shortest(SpringKind::kStructural))},
-          {"structural_under_half_spacing", {{"along_outline", slivers(m).along}, {"inward", slivers(m).inward}}},
+          {"structural_under_half_spacing", {{"along_outline", short_ones.along}, {"inward", short_ones.inward}}},
           {"seams", static_cast<int>(pat.seams.size())},
           {"seam_pairs", static_cast<int>(m.mesh.seam_pairs.cols())},
           {"seam_offset_max_cm", seam_offsets(m)},
