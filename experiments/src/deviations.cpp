@@ -93,7 +93,7 @@ const std::vector<Deviation>& deviations() {
        {"solver.limit_speed=0"},
        true,
        true},
-      {"seam pairs closer than solver.merge_distance (2 mm) merged into one point (Durupinar section 3.1)",
+      {"seam pairs closer than solver.merge_distance (3 mm) merged into one point (Durupinar section 3.1)",
        "\"the patterns are seamed\" after a number of iterations, how not stated (walking section 2); switched off "
        "here by merging only within 1 µm",
        {"solver.merge_distance=0.000001"},

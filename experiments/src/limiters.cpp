@@ -47,7 +47,6 @@ std::vector<std::string> overrides(const ExperimentContext& ctx, const Case& c, 
   // stable one only where the setting asks
   const bool after = s.after || std::string(s.regime) == "papers";
   sets.push_back(std::string("solver.limit_after_response=") + (after ? "true" : "false"));
-  if (std::string(s.regime) == "papers") sets.push_back(papers_merge_distance());
   if (*c.clip) sets.push_back(std::string("body.animation=") + c.clip);
   if (!*c.clip) sets.push_back("stop.drape_max_s=2");
   if (ctx.quick()) sets.push_back(*c.clip ? "body.end_s=1.1" : "stop.max_iterations=40");

@@ -514,7 +514,6 @@ void walk_garment(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, W
         continue;
       std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices),
                                     "solver.regime=" + variant.regime};
-      if (variant.regime == "papers") sets.push_back(papers_merge_distance());
       sets.insert(sets.end(), variant.sets.begin(), variant.sets.end());
       sets.insert(sets.end(), sets_quick.begin(), sets_quick.end());
       // the is-cpu run of the stable regime also leaves pictures, and the 3-D viewer takes the is-cpu walk of each

@@ -32,16 +32,6 @@ inline std::vector<std::string> papers_image_space(const std::string& collider) 
   return {"collider.tangent_plane=false", "collider.float_maps=false", "collider.layers=1"};
 }
 
-/// The papers' clock's own seam merging (apply_regime's preset), as an override: a walking scene that merges its
-/// pairs farther apart for the stable regime (scenes/walking/dress_sleeves.toml) overrides the preset too, and the
-/// papers' soft seams close their last millimetres too slowly to merge at that distance.
-inline std::string papers_merge_distance() {
-  Material material;
-  SolverParams params;
-  apply_regime(Regime::kPapers, material, params);
-  return "solver.merge_distance=" + std::to_string(params.merge_distance);
-}
-
 /// The paper tables' default for every collider: image space as papers_image_space, and the object-space
 /// colliders that offer it (ColliderInfo::face_normals) respond with face normals, as the dressing paper's
 /// bounding-box method did (section 7); rows named "ours" run our defaults (interpolated vertex normals). Empty for

@@ -88,7 +88,9 @@ struct SolverParams {
   Real seam_reach = 0.005f;      ///< elastic seams pull with k |d| up to this gap and no harder beyond it [m]
   Real seam_speed = 2.f;         ///< partners of an elastic seam approach each other no faster than this [m/s]
   Real attraction_speed = 0.5f;  ///< c_attraction of Durupinar Eq. 1 [m/s]
-  Real merge_distance = 0.002f;  ///< seam pairs closer than this are merged [m]
+  /// seam pairs closer than this are merged [m]: above the 2 mm seam-gap limit, so a pair the body holds a little
+  /// more than 2 mm apart (a sleeve's and an armhole's vertex under the arm) still merges
+  Real merge_distance = 0.003f;
   Real max_speed = 50.f;         ///< divergence: any vertex faster than this [m/s]
   Real bounds_margin = 5.f;      ///< divergence: a vertex farther than this from its start box [m]
 };
