@@ -96,6 +96,16 @@ void place_grid_vertices(const Panel& p, double h, PanelGrid& g, std::vector<int
   for (auto& ev : g.edge_vertices) std::sort(ev.begin(), ev.end());
 }
 
+// The cell's corners all lie on the outline and its middle lies outside it (beyond rounding).
+bool spans_a_hollow(const Panel& p, const PanelGrid& g, const std::array<int, 4>& c, double h) {
+  Vec2d mid = Vec2d::Zero();
+  for (const int v : c) {
+    if (!g.boundary[static_cast<std::size_t>(v)]) return false;
+    mid += 0.25 * g.uv[static_cast<std::size_t>(v)];
+  }
+  return !inside(p.outline, mid) && closest_on_outline(p.outline, mid).dist > kOnOutline * h;
+}
+
 }  // namespace
 
 namespace garment_detail {
@@ -128,13 +138,15 @@ PanelGrid grid_panel(const Panel& p, double h) {
     }
   // cells: four kept corners make a quad; three (a cell the outline cuts, along a slanted or curved
   // edge) make a triangle, stored as a quad whose last corner repeats its third; left out, they would
-  // leave a staircase of holes along the outline, in the pictures, the face queries and the masses
+  // leave a staircase of holes along the outline, in the pictures, the face queries and the masses.
+  // A cell whose corners all lie on the outline and whose middle lies outside it spans a hollow of the
+  // outline (a neckline's dip): it is no cloth, and its midpoint, queried with face queries, would sit in the body
   for (int j = 0; j + 1 < ny; ++j)
     for (int i = 0; i + 1 < nx; ++i) {
       std::array<int, 4> c{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
       const auto kept = std::remove(c.begin(), c.end(), -1);
       if (kept - c.begin() == 3) c[3] = c[2];
-      if (kept - c.begin() >= 3) g.quads.push_back(c);
+      if (kept - c.begin() >= 3 && !spans_a_hollow(p, g, c, h)) g.quads.push_back(c);
     }
   return g;
 }

@@ -179,6 +179,38 @@ TEST(Garment, NoStructuralSpringFromTheOutlineInwardIsShorterThanHalfASpacing) {
     }
 }
 
+TEST(Garment, NoCellSpansTheHollowOfANeckline) {
+  // a neckline's dip: a circular arc cut into the top of a panel. A cell whose corners the ring snaps onto the arc
+  // would span the dip, cloth where the pattern has none, its midpoint (queried with face queries) in the neck
+  Pattern pat;
+  pat.name = "neckline";
+  Panel front;
+  front.name = "front";
+  const Vec2d centre(20, 60);
+  const double radius = 22;
+  front.outline = {Vec2d(0, 0), Vec2d(40, 0), Vec2d(40, 50)};
+  const double right = std::atan2(50 - centre.y(), std::sqrt(radius * radius - 100)), left = -M_PI - right;
+  for (int k = 0; k <= 30; ++k) {
+    const double a = right + (left - right) * k / 30;
+    front.outline.push_back(centre + radius * Vec2d(std::cos(a), std::sin(a)));
+  }
+  front.outline.push_back(Vec2d(0, 50));
+  front.edge_begin = {0};
+  pat.panels = {front};
+  for (double spacing : {1.7, 2.3, 3.1, 3.9}) {
+    const MeshedPattern m = mesh_pattern(pat, spacing);
+    double nearest = 1e9;  // the cells' middles' distance from the arc's centre
+    for (Eigen::Index q = 0; q < m.mesh.quads.cols(); ++q) {
+      Vec2d mid = Vec2d::Zero();
+      for (int k = 0; k < 4; ++k) mid += 0.25 * m.uv.col(m.mesh.quads(k, q));
+      nearest = std::min(nearest, (mid - centre).norm());
+    }
+    std::printf("[ hollow  ] spacing %.1f cm: the cell middle nearest the dip %.3f cm below its arc (negative: in it)\n",
+                spacing, nearest - radius);
+    EXPECT_GE(nearest, radius - 1e-6) << "spacing " << spacing;
+  }
+}
+
 TEST(Garment, RejectsBadPatterns) {
   Pattern pat = two_panel(40, 50);
   pat.seams.push_back(pat.seams[0]);
