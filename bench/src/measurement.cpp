@@ -16,18 +16,38 @@ namespace {
 
 // "vertex 812 at (0.180, 1.250, -0.020) m, 13.6 mm inside at t = 2.10 s; the collider answered contact at
 // -2.1 mm": where and when a point is deepest, and what the collider under test said of it at its last step
-std::string describe_vertex(const Simulator& sim, int v, double depth_mm, double t) {
+std::string describe_vertex(const Simulator& sim, int v, double depth_mm, const std::string& when) {
   const auto p = sim.positions().col(v);
   const auto& contacts = sim.contacts();
   const bool hit = contacts.size() > static_cast<std::size_t>(v) && contacts[static_cast<std::size_t>(v)].hit;
   char text[200];
-  std::snprintf(text, sizeof text, "vertex %d at (%.3f, %.3f, %.3f) m, %.1f mm inside at t = %.2f s; ", v, double(p(0)),
-                double(p(1)), double(p(2)), depth_mm, t);
+  std::snprintf(text, sizeof text, "vertex %d at (%.3f, %.3f, %.3f) m, %.1f mm inside %s; ", v, double(p(0)),
+                double(p(1)), double(p(2)), depth_mm, when.c_str());
   std::string out = text;
   if (!hit) return out + "the collider answered no contact";
   std::snprintf(text, sizeof text, "the collider answered contact at %.1f mm",
                 1e3 * double(contacts[static_cast<std::size_t>(v)].depth));
   return out + text;
+}
+
+// the oracle's deepest point at the end of a run: a vertex as describe_vertex, or a quad's midpoint (face queries)
+std::string describe_point(const Simulator& sim, long k, double depth_mm) {
+  const long n = sim.positions().cols();
+  if (k < n) return describe_vertex(sim, static_cast<int>(k), depth_mm, "at the end");
+  const int q = static_cast<int>(k - n);
+  const auto p = sim.quad_midpoints().col(q);
+  const auto& c = sim.mesh().quads;
+  char text[200];
+  std::snprintf(text, sizeof text, "the midpoint of quad %d (vertices %d, %d, %d, %d) at (%.3f, %.3f, %.3f) m, %.1f mm "
+                "inside at the end", q, c(0, q), c(1, q), c(2, q), c(3, q), double(p(0)), double(p(1)), double(p(2)),
+                depth_mm);
+  return text;
+}
+
+std::string at_time(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "at t = %.2f s", t);
+  return text;
 }
 
 // "spring 40 (vertices 12-13), 1.32 m high, ends in contact 1/2, on a seam 0/2": where a spring is
@@ -78,7 +98,7 @@ void measure_frame(const BodyFrame& frame, const Simulator& sim, const StrainSta
   Accuracy a = oracle.measure(sim.positions());
   oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
   if (a.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm))
-    r.depth_max_where = describe_vertex(sim, static_cast<int>(a.deepest), a.depth_max_mm, t);
+    r.depth_max_where = describe_vertex(sim, static_cast<int>(a.deepest), a.depth_max_mm, at_time(t));
   r.frame_samples.push_back({t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});
 }
 
@@ -92,6 +112,8 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
     points = std::move(all);
   }
   r.accuracy = oracle.measure(points);
+  if (r.accuracy.deepest >= 0 && r.accuracy.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm))
+    r.depth_max_where = describe_point(sim, r.accuracy.deepest, r.accuracy.depth_max_mm);
   oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), r.accuracy);
   oracle.measure_faces(sim.positions(), sim.mesh().quads, r.accuracy);
   // the seams, the strain and the motion left

@@ -77,6 +77,26 @@ TEST(Runner, EveryFrameIsMeasuredAndTheDeepestPointIsNamed) {
   EXPECT_EQ(row.at("depth_max_where").get<std::string>(), r.depth_max_where);
 }
 
+// without --every-frame the end state's deepest point is named, a quad's midpoint too with face queries
+TEST(Runner, TheEndStatesDeepestPointIsNamed) {
+  RunOptions o;
+  o.progress = false;
+  for (const bool faces : {false, true}) {
+    Scene s = small_tablecloth();
+    s.body.velocity = Vec3(0, 3, 0);
+    s.solver.push_out = false;
+    s.solver.face_queries = faces;
+    const RunResult r = run_scene(s, o);
+    ASSERT_FALSE(r.divergence);
+    ASSERT_GT(r.accuracy.depth_max_mm, 0);
+    char depth[40];
+    std::snprintf(depth, sizeof depth, "%.1f mm inside at the end", r.accuracy.depth_max_mm);
+    EXPECT_NE(r.depth_max_where.find(depth), std::string::npos) << r.depth_max_where;
+    const bool midpoint = r.accuracy.deepest >= r.vertices;
+    EXPECT_EQ(r.depth_max_where.rfind(midpoint ? "the midpoint of quad " : "vertex ", 0), 0u) << r.depth_max_where;
+  }
+}
+
 // the sphere's velocity applies to the animation only: dressing sees a body at rest
 TEST(Runner, MovingSphereRestsWhileDressing) {
   RunOptions quiet;

@@ -74,7 +74,8 @@ struct RunResult {
   double strain_over = 0;       ///< share of the structural springs over threshold + 1 %, fraction
   std::string strain_max_where; ///< the most strained structural spring: its ends, height, contacts, seams
   std::string seam_gap_where;   ///< the widest opening along the seams: its vertices and panels ("" when closed)
-  std::string depth_max_where;  ///< measure_frames: the deepest vertex of the deepest frame: where, when, contact
+  std::string depth_max_where;  ///< the deepest point inside the body: of the deepest measured frame (where, when,
+                                ///< contact), or of the end state when that is deeper ("" when none is inside)
   double kinetic_energy = 0;
   double animate_strain_max = 0;           ///< largest structural strain seen at any animation frame
   std::vector<FrameSample> frame_samples;  ///< RunOptions::measure_frames: every measured animation frame
