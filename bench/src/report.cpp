@@ -14,8 +14,8 @@
 #include <sstream>
 #include <thread>
 
-#include "clothbench/config.h"
 #include "clothbench/bench/run_result_json.hpp"
+#include "clothbench/config.h"
 #include "clothbench/io/errors.hpp"
 
 namespace clothbench {
@@ -49,13 +49,23 @@ std::string cpu_model() {
   return "unknown";
 }
 
-// 6.1, 0.5, 5: two decimals at most, no trailing zeros
-std::string short_num(double v) {
-  std::string s = num(v, 2);
+// "6.10" -> 6.1, "5.00" -> 5: no trailing zeros
+std::string trimmed(std::string s) {
   if (s.find('.') == std::string::npos) return s;
   while (s.back() == '0') s.pop_back();
   if (s.back() == '.') s.pop_back();
   return s;
+}
+
+// 6.1, 0.5, 5: two decimals at most, no trailing zeros
+std::string short_num(double v) { return trimmed(num(v, 2)); }
+
+// a value past its limit, with as many decimals as show it past (0.503 against 0.5, where two would print 0.5)
+std::string past_limit(double v, double limit) {
+  if (!std::isfinite(v)) return num(v, 2);
+  for (int decimals = 2; decimals < 6; ++decimals)
+    if (std::stod(num(v, decimals)) > limit) return trimmed(num(v, decimals));
+  return num(v, 6);
 }
 
 // one limit: its name, the run's value and the limit, in the unit shown
@@ -77,8 +87,8 @@ std::vector<LimitCheck> limit_checks(const RunResult& r, bool with_strain) {
       {"crossings", worst(r.accuracy.crossings_pct, r.frame_max(&FrameSample::crossings_pct)), l.crossings_pct, "%"},
       {"seam gap", worst(r.seam_gap_max_mm, r.window_seam_gap_mm), l.seam_gap_mm, "mm"}};
   if (with_strain && r.strain_threshold > 0)
-    checks.push_back({"strain", 100 * worst(r.strain_max, r.animate_strain_max),
-                      100 * (r.strain_threshold + l.strain_excess), "%"});
+    checks.push_back(
+        {"strain", 100 * worst(r.strain_max, r.animate_strain_max), 100 * (r.strain_threshold + l.strain_excess), "%"});
   return checks;
 }
 
@@ -100,8 +110,8 @@ std::vector<std::string> limit_misses(const RunResult& r, bool with_strain) {
   std::vector<std::string> misses;
   for (const LimitCheck& c : limit_checks(r, with_strain))
     if (!(c.value <= c.limit))  // NaN misses too
-      misses.push_back(std::string(c.name) + " " + short_num(c.value) + " " + c.unit + " > " + short_num(c.limit) +
-                       " " + c.unit);
+      misses.push_back(std::string(c.name) + " " + past_limit(c.value, c.limit) + " " + c.unit + " > " +
+                       short_num(c.limit) + " " + c.unit);
   return misses;
 }
 
@@ -327,8 +337,8 @@ nlohmann::json result_document(const nlohmann::json& rows) {
   return {{"context", machine_context()}, {"benchmarks", rows}};
 }
 
-nlohmann::json runs_document(const std::vector<RunResult>& runs, const std::string& name,
-                             const std::string& scene_path, bool end_state) {
+nlohmann::json runs_document(const std::vector<RunResult>& runs, const std::string& name, const std::string& scene_path,
+                             bool end_state) {
   std::vector<nlohmann::json> rows;
   for (const RunResult& r : runs) {
     rows.push_back(result_row(r, name));
@@ -350,7 +360,6 @@ nlohmann::json read_json_file(const std::string& path) {
     throw InputError(path + ": not JSON: " + e.what());
   }
 }
-
 
 std::string num(double v, int digits) {
   if (!std::isfinite(v)) return "-";

@@ -107,6 +107,11 @@ TEST(Report, LimitMissesNameEachLimitMissed) {
   EXPECT_EQ(limit_misses(r, false).size(), 2u);
   r.divergence = Divergence{};
   EXPECT_EQ(limit_misses(r), std::vector<std::string>{"diverged"});
+  // a value just past its limit shows as many decimals as it takes to read it past
+  RunResult near;
+  near.accuracy.inside_pct = 0.5031;
+  near.accuracy.depth_max_mm = 5.0004;
+  EXPECT_EQ(limit_misses(near), (std::vector<std::string>{"inside 0.503 % > 0.5 %", "depth 5.0004 mm > 5 mm"}));
 }
 
 TEST(Report, AWalkThatStartsWithItsSeamsOpenMissesTheSeamGap) {
