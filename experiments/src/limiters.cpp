@@ -253,6 +253,8 @@ void limiters(ExperimentContext& ctx) {
   std::vector<Measured> rows;
   nlohmann::json series = nlohmann::json::array();
   for (const auto& [c, settings] : cases) {
+    // --quick: the code paths once (the second clip adds none, as in walking-t2)
+    if (ctx.quick() && std::string(c.clip) == "walk_08_02") continue;
     RunOptions options;
     options.measure_frames = *c.clip;
     for (const Setting& s : settings) {
