@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
@@ -305,7 +306,10 @@ void apply_override(toml::table& root, const std::string& item) {
   insert(*t);
 }
 
+void give_way_to_a_preset(toml::table& root, const std::vector<std::string>& overrides);
+
 Scene read_scene(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
+  give_way_to_a_preset(root, overrides);
   for (const auto& o : overrides) apply_override(root, o);
   Scene s;
   s.path = file;
@@ -399,6 +403,44 @@ std::string config(const char* section, const T& fields) {
   ConfigWriter w(section);
   visit_fields(fields, w);
   return w.str();
+}
+
+// the [material] and [solver] keys the two presets set to different values (apply_regime), as "section.key"
+std::set<std::string> keys_the_presets_decide() {
+  const auto preset = [](Regime r) {
+    Material m;
+    SolverParams p;
+    apply_regime(r, m, p);
+    std::map<std::string, std::string> values;
+    std::istringstream lines(config("material", m) + config("solver", p));
+    for (std::string line; std::getline(lines, line);) {
+      const auto eq = line.find(" = ");
+      values[line.substr(0, eq)] = line.substr(eq + 3);
+    }
+    return values;
+  };
+  const auto stable = preset(Regime::kStable), papers = preset(Regime::kPapers);
+  std::set<std::string> decided;
+  for (const auto* one : {&stable, &papers})
+    for (const auto& [key, value] : *one) {
+      const auto* other = one == &stable ? &papers : &stable;
+      const auto it = other->find(key);
+      if (it == other->end() || it->second != value) decided.insert(key);
+    }
+  return decided;
+}
+
+// a regime given with --set runs the scene under that preset: the scene file's own values of the keys the presets
+// decide (tuned for the file's regime) give way to it; every other --set key still applies after it
+void give_way_to_a_preset(toml::table& root, const std::vector<std::string>& overrides) {
+  const bool sets_regime = std::any_of(overrides.begin(), overrides.end(), [](const std::string& o) {
+    return o.rfind("solver.regime=", 0) == 0;
+  });
+  if (!sets_regime) return;
+  for (const std::string& key : keys_the_presets_decide()) {
+    const auto dot = key.find('.');
+    if (toml::table* t = root[key.substr(0, dot)].as_table()) t->erase(key.substr(dot + 1));
+  }
 }
 
 }  // namespace

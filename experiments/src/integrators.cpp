@@ -91,8 +91,8 @@ std::string step_sweep(ExperimentContext& ctx, const Garment& g, const std::vect
          " vertices, " + collider +
          ")\n\nThe papers' regime's springs are made for 5 ms (equal point masses, as soft as Eq. 4 and Gershgorin "
          "need at dt / 0.9); here they are kept while dt grows, with `allow_unstable_dt` (Eq. 4 would refuse the larger "
-         "steps). Implicit Euler runs the stable regime's 60/20/10 N/m springs with its area masses at the same "
-         "steps. Bounds are those of the explicit row's springs and masses.\n\n" +
+         "steps). Implicit Euler runs the stable regime's 60/20/10 N/m springs (its point masses equal too) at the "
+         "same steps. Bounds are those of the explicit row's springs and masses.\n\n" +
          t.str();
 }
 

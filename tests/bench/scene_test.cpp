@@ -279,6 +279,32 @@ TEST(Scene, DefaultsAndPresetsAreValid) {
   EXPECT_NO_THROW(fields::check_fields(ColliderOptions{}));
 }
 
+// a regime given with --set runs the scene under that preset: the file's values of the keys the presets decide
+// differently give way (not those they leave alone), and --set keys still apply after it
+TEST(Scene, ARegimeGivenWithSetOverridesTheFilesPresetKeys) {
+  const std::string text = "[solver]\nlimit_passes = 16\nmerge_distance = 0.004\nthreshold = 0.08\n"
+                           "[material]\nk_structural = 90\ndamping = 5\n";
+  const Scene own = parse_scene(text, "s.toml");
+  EXPECT_EQ(own.solver.limit_passes, 16);
+  EXPECT_EQ(own.material.k_structural, 90.f);
+  Material pm;
+  SolverParams pp;
+  apply_regime(Regime::kPapers, pm, pp);
+  const Scene papers = parse_scene(text, "s.toml", {"solver.regime=papers"});
+  EXPECT_EQ(papers.solver.regime, Regime::kPapers);
+  EXPECT_EQ(papers.solver.limit_passes, pp.limit_passes);
+  EXPECT_EQ(papers.solver.merge_distance, pp.merge_distance);
+  EXPECT_EQ(papers.solver.dt, pp.dt);
+  EXPECT_EQ(papers.material.k_structural, pm.k_structural);
+  // keys the presets leave alone stay the file's
+  EXPECT_EQ(papers.solver.threshold, 0.08f);
+  EXPECT_EQ(papers.material.damping, 5.f);
+  const Scene more = parse_scene(text, "s.toml", {"solver.regime=papers", "solver.limit_passes=4"});
+  EXPECT_EQ(more.solver.limit_passes, 4);
+  // the same regime as the file's own changes nothing but the keys it decides
+  EXPECT_EQ(parse_scene(text, "s.toml", {"solver.regime=stable"}).solver.limit_passes, SolverParams{}.limit_passes);
+}
+
 TEST(Scene, EveryCommittedSceneParses) {
   int n = 0;
   for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes"))

@@ -41,7 +41,7 @@ enum class MassModel { kArea, kEqual };
 const char* to_string(MassModel m);
 MassModel parse_mass_model(const std::string& name);
 
-/// Named presets of the solver (scenes/README.md). kStable: the defaults (area masses, stiff springs,
+/// Named presets of the solver (scenes/README.md). kStable: the defaults (equal masses, stiff springs,
 /// automatic dt below Eq. 4 and Gershgorin). kPapers: the papers' clock: equal point masses, dt 5 ms, soft
 /// springs derived from the mass per point and dt (Material k = 0), stretch held by the velocity limit.
 enum class Regime { kStable, kPapers };
@@ -64,7 +64,9 @@ struct SolverParams {
   IntegratorParams integration;               ///< tolerances of implicit-euler and rk45
   Real dt_fraction = 0.9f;               ///< automatic dt (and automatic stiffness) margin (0, 1]
   Regime regime = Regime::kStable;       ///< the preset these parameters came from (apply_regime); a label
-  MassModel masses = MassModel::kArea;   ///< point masses
+  /// point masses: equal (dressing Eq. 3). With area masses a ring vertex snapped to the outline carries a sliver's
+  /// share, and the lightest point bounds Eq. 4 and Gershgorin's step: equal ones admit a step several times longer
+  MassModel masses = MassModel::kEqual;
   bool allow_unstable_dt = false;        ///< explicit-euler: accept a given dt above the Eq. 4 bound (stability studies)
   std::string limit = "velocity";        ///< the strain limiter, by name (limiter_names(); limiter.hpp)
   Real threshold = 0.10f;                ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
