@@ -279,8 +279,8 @@ TEST(Scene, DefaultsAndPresetsAreValid) {
   EXPECT_NO_THROW(fields::check_fields(ColliderOptions{}));
 }
 
-// a regime given with --set runs the scene under that preset: the file's values of the keys the presets decide
-// differently give way (not those they leave alone), and --set keys still apply after it
+// a regime given with --set other than the file's own runs the scene under that preset: the file's values of the keys
+// the presets decide differently give way (not those they leave alone), and --set keys still apply after it
 TEST(Scene, ARegimeGivenWithSetOverridesTheFilesPresetKeys) {
   const std::string text = "[solver]\nlimit_passes = 16\nmerge_distance = 0.004\nthreshold = 0.08\n"
                            "[material]\nk_structural = 90\ndamping = 5\n";
@@ -301,8 +301,11 @@ TEST(Scene, ARegimeGivenWithSetOverridesTheFilesPresetKeys) {
   EXPECT_EQ(papers.material.damping, 5.f);
   const Scene more = parse_scene(text, "s.toml", {"solver.regime=papers", "solver.limit_passes=4"});
   EXPECT_EQ(more.solver.limit_passes, 4);
-  // the same regime as the file's own changes nothing but the keys it decides
-  EXPECT_EQ(parse_scene(text, "s.toml", {"solver.regime=stable"}).solver.limit_passes, SolverParams{}.limit_passes);
+  // the file's own regime given again changes nothing
+  EXPECT_EQ(parse_scene(text, "s.toml", {"solver.regime=stable"}).solver.limit_passes, 16);
+  const std::string papers_file = "[solver]\nregime = \"papers\"\nlimit_passes = 4\n";
+  EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=papers"}).solver.limit_passes, 4);
+  EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=stable"}).solver.limit_passes, SolverParams{}.limit_passes);
 }
 
 TEST(Scene, EveryCommittedSceneParses) {
