@@ -249,8 +249,8 @@ void deviations_experiment(ExperimentContext& ctx) {
             "skirt as committed in "
             "scenes/, stable regime; the walk measured at every frame by the exact oracle, its worst frame shown). "
             "\"a -> b\" is ours, then switched off. The papers' own methods the project also implements (the papers' "
-            "regime, equal point masses, zeroing, averaging) are compared in their experiments (dressing-t1, "
-            "integrators, walking-f8, stability).\n\n" +
+            "regime, zeroing, averaging) are compared in their experiments (dressing-t1, integrators, walking-f8, "
+            "stability); their equal point masses (dressing Eq. 3) are our default too.\n\n" +
                 t.str() + (walk ? "" : "\nThe walking body is absent: the walking rows are left out.\n") +
                 "\n### Not switchable (not measured)\n\n" + unmeasured.str(),
             {"The papers: their methods as written (the deviations' second column); a default of ours departs from "

@@ -33,6 +33,17 @@ struct Setting {
   bool after = false;  // the stable regime's limit run again after the collision response (the papers' always is)
 };
 
+// --quick runs each limiter's code path once a case: a setting that differs from an earlier one of the case only in
+// its pass count adds none
+bool repeats_a_code_path(const std::vector<Setting>& settings, const Setting& s) {
+  for (const Setting& earlier : settings) {
+    if (&earlier == &s) return false;
+    if (std::string(earlier.regime) == s.regime && std::string(earlier.limit) == s.limit && earlier.after == s.after)
+      return true;
+  }
+  return false;
+}
+
 // the row's name: limiters/GARMENT/CLIP/REGIME/LIMIT/PASSES
 std::string row_name(const Case& c, const Setting& s) {
   return std::string("limiters/") + c.garment + "/" + (*c.clip ? c.clip : "static") + "/" + s.regime + "/" + s.limit +
@@ -258,6 +269,7 @@ void limiters(ExperimentContext& ctx) {
     RunOptions options;
     options.measure_frames = *c.clip;
     for (const Setting& s : settings) {
+      if (ctx.quick() && repeats_a_code_path(settings, s)) continue;
       const RunResult& r = ctx.run(c.scene, collider, overrides(ctx, c, s), options);
       ctx.add_run(r, row_name(c, s));
       const Measured m = measure(c, s, r);

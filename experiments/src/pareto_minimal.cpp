@@ -27,6 +27,11 @@ const Garment kGarments[] = {{"shirt", "dressing/shirt.toml", {300, 544, 1000, 1
                              {"dress", "dressing/dress.toml", {500, 1024, 2000, 3840}},
                              {"skirt", "dressing/skirt.toml", {200, 336, 672, 1344}}};
 
+// the sizes a garment's matrix runs: --quick takes the two smallest (the code paths once)
+std::vector<int> sizes_of(const ExperimentContext& ctx, const Garment& g) {
+  return ctx.quick() ? std::vector<int>(g.sizes.begin(), g.sizes.begin() + 2) : g.sizes;
+}
+
 std::vector<std::string> sets_for(const ExperimentContext& ctx, int vertices, std::vector<std::string> extra) {
   std::vector<std::string> s = kBudget;
   s.push_back("garment.vertices=" + std::to_string(vertices));
@@ -80,7 +85,7 @@ Reference reference_drape(ExperimentContext& ctx, const Garment& g) {
   // brute, the reference, is exact and always built
   const std::string exact =
       lead_first(kLeadObjectSpace, ctx.colliders([](const ColliderInfo& c) { return c.exact; })).front();
-  const int n = ctx.quick() ? g.sizes.back() : 2 * g.sizes.back();
+  const int n = ctx.quick() ? sizes_of(ctx, g).back() : 2 * g.sizes.back();
   const RunResult& r = ctx.run(g.scene, exact, sets_for(ctx, n, {}));
   ctx.add_run(r, std::string("pareto/") + g.name + "/reference " + exact + "/" + std::to_string(n));
   if (r.divergence) throw std::runtime_error(std::string("pareto: the reference drape of the ") + g.name + " diverged");
@@ -116,11 +121,11 @@ std::vector<Point> garment_points(ExperimentContext& ctx, const Garment& g, cons
       configs.push_back({os, os + " voxel " + std::string(voxel), {std::string("collider.voxel_size=") + voxel}});
   std::vector<ExperimentContext::Request> requests;
   for (const auto& c : configs)
-    for (int n : g.sizes) requests.push_back({g.scene, c.collider, sets_for(ctx, n, c.sets)});
+    for (int n : sizes_of(ctx, g)) requests.push_back({g.scene, c.collider, sets_for(ctx, n, c.sets)});
   ctx.prefetch(requests);  // reproduce --jobs N: the grid in N worker processes
   std::vector<Point> pts;
   for (const auto& c : configs)
-    for (int n : g.sizes) {
+    for (int n : sizes_of(ctx, g)) {
       const RunResult& r = ctx.run(g.scene, c.collider, sets_for(ctx, n, c.sets));
       Point p;
       p.label = c.label;
@@ -209,7 +214,8 @@ void pareto(ExperimentContext& ctx) {
           "top/bottom), which the papers did not have. Resolutions: ";
   for (const auto& g : kGarments) {
     body << g.name << " ";
-    for (std::size_t i = 0; i < g.sizes.size(); ++i) body << (i ? ", " : "") << g.sizes[i];
+    const std::vector<int> sizes = sizes_of(ctx, g);
+    for (std::size_t i = 0; i < sizes.size(); ++i) body << (i ? ", " : "") << sizes[i];
     body << (&g == &kGarments[std::size(kGarments) - 1]
                  ? " vertices (requested; the mesher's counts are in the tables).\n\n"
                  : "; ");
