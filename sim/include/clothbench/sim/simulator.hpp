@@ -74,8 +74,8 @@ struct SolverParams {
   int limit_passes = 8;                  ///< passes of the limit over the springs per call (the most)
   /// velocity limits run once more after the collision response, each pass followed by stopping motion into the
   /// body of the vertices in contact (the response would otherwise undo the limit where the body holds the cloth).
-  /// Both regimes: walking Eq. 5 with 8 passes after the response is the stable regime's cheapest setting measured
-  /// (results/limiters.md) that holds every limit on the static and the walking body
+  /// Both regimes: walking Eq. 5 with 8 passes after the response holds every limit on the static body and the walking
+  /// dress (the walking skirt takes 16; results/limiters.md lists the cheapest setting per garment and clip)
   bool limit_after_response = true;
   Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
   Real limit_tolerance = 0;              ///< a velocity limit pass's change that moves a point less than this over the
