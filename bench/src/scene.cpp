@@ -433,12 +433,12 @@ std::set<std::string> keys_the_presets_decide() {
 // a regime given with --set other than the file's own runs the scene under that preset: the file's values of the keys
 // the presets decide (tuned for its own regime) give way to it; every other --set key still applies after it
 void give_way_to_a_preset(toml::table& root, const std::vector<std::string>& overrides) {
-  const std::string prefix = "solver.regime=";
-  std::string given;
-  for (const std::string& o : overrides)
-    if (o.rfind(prefix, 0) == 0) given = o.substr(prefix.size());
-  const std::string own = root["solver"]["regime"].value_or(std::string(to_string(Regime::kStable)));
-  if (given.empty() || given == own) return;
+  const auto regime = [](toml::table& t) {
+    return t["solver"]["regime"].value_or(std::string(to_string(Regime::kStable)));
+  };
+  toml::table given = root;  // the regime the overrides leave, read as the reader reads it
+  for (const auto& o : overrides) apply_override(given, o);
+  if (regime(given) == regime(root)) return;
   for (const std::string& key : keys_the_presets_decide()) {
     const auto dot = key.find('.');
     if (toml::table* t = root[key.substr(0, dot)].as_table()) t->erase(key.substr(dot + 1));

@@ -305,6 +305,7 @@ TEST(Scene, ARegimeGivenWithSetOverridesTheFilesPresetKeys) {
   EXPECT_EQ(parse_scene(text, "s.toml", {"solver.regime=stable"}).solver.limit_passes, 16);
   const std::string papers_file = "[solver]\nregime = \"papers\"\nlimit_passes = 4\n";
   EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=papers"}).solver.limit_passes, 4);
+  EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=\"papers\""}).solver.limit_passes, 4);  // TOML text
   EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=stable"}).solver.limit_passes, SolverParams{}.limit_passes);
 }
 

@@ -72,8 +72,8 @@ TEST(Simulator, TwoParticleSpringPeriodMatchesTheory) {
   EXPECT_NEAR(measured, period, 0.01 * period) << "theory " << period << " s";
 }
 
-// run a pinned square under gravity; returns true when it did not diverge
-// explicit Euler on the pinned square at `dt_multiple` x the smaller of Eq. 4's and Gershgorin's bounds
+// explicit Euler on the pinned square under gravity at `dt_multiple` x the smaller of Eq. 4's and Gershgorin's
+// bounds; true when it did not diverge
 bool runs_stably(Real dt_multiple, int steps) {
   SolverParams p;
   p.limit = "none";
