@@ -230,6 +230,36 @@ void place_run(const Panel& p, int edge, PanelGrid& g) {
     g.uv[static_cast<std::size_t>(v)] = point_on_edge(p, edge, t);
 }
 
+// Whether two neighbours of an edge run lie closer than half a spacing h along the edge.
+bool crowded(const Panel& p, int e, const std::vector<std::pair<double, int>>& run, double h) {
+  const double len = edge_length_cm(p, e);
+  for (std::size_t k = 1; k < run.size(); ++k)
+    if ((run[k].first - run[k - 1].first) * len < 0.5 * h) return true;
+  return false;
+}
+
+// An edge no seam placed whose run is crowded (ring vertices snapped to nearby points of a slanted or curved
+// edge, or a seam's end moved onto the corner beside one) is spread evenly along the edge, corners kept: the
+// spring between two such neighbours would otherwise be a sliver, where a millimetre of error is a large strain.
+// A vertex a seam moved onto the edge's corner joins the run first (it lies on this edge too).
+void spread_crowded_runs(const Pattern& pat, double h, std::vector<PanelGrid>& grids,
+                         const std::set<std::pair<int, int>>& placed) {
+  for (std::size_t pi = 0; pi < grids.size(); ++pi) {
+    const Panel& p = pat.panels[pi];
+    for (int e = 0; e < p.edge_count(); ++e) {
+      auto& run = grids[pi].edge_vertices[static_cast<std::size_t>(e)];
+      if (placed.count({static_cast<int>(pi), e}) > 0 || run.empty()) continue;
+      for (const double t : {0.0, 1.0}) {
+        const int v = vertex_at(grids[pi], point_on_edge(p, e, t));
+        if (v >= 0 && !holds(run, v)) run.insert(t > 0.5 ? run.end() : run.begin(), {t, v});
+      }
+      if (!crowded(p, e, run, h)) continue;
+      respace_run(run, {});
+      place_run(p, e, grids[pi]);
+    }
+  }
+}
+
 }  // namespace
 
 double edge_length_cm(const Panel& p, int e) {
@@ -264,6 +294,7 @@ void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& g
     done.insert({s.panel_a, s.edge_a});
     done.insert({s.panel_b, s.edge_b});
   }
+  spread_crowded_runs(pat, h, grids, done);
 }
 
 // Pairs two vertex runs by arc position (fraction of the edge length, so edges of different

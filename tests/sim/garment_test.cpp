@@ -179,6 +179,55 @@ TEST(Garment, NoStructuralSpringFromTheOutlineInwardIsShorterThanHalfASpacing) {
     }
 }
 
+TEST(Garment, NoSpringAlongTheOutlineOffTheSeamsIsShorterThanHalfASpacing) {
+  // the shirt of scenes/garments/shirt.pattern: slanted shoulders sewn front to back, curved armholes and necklines
+  // left open. Ring vertices snapped to nearby points of a curve, and a shoulder seam's end moved onto the neck's
+  // corner beside the neckline's first vertex, made springs along the outline shorter than half a spacing. An edge
+  // no seam places is spread evenly along itself when two of its vertices stand closer than that
+  auto panel = [](const char* name, double neck_dip) {
+    Panel p;
+    p.name = name;
+    auto edge = [&](std::vector<Vec2d> points) {
+      p.edge_begin.push_back(static_cast<int>(p.outline.size()));
+      p.outline.insert(p.outline.end(), points.begin(), points.end());
+    };
+    auto curve = [](Vec2d a, Vec2d c, Vec2d b) {
+      auto pts = flatten_bezier(a, {c}, b, 12);
+      pts.insert(pts.begin(), a);
+      pts.pop_back();
+      return pts;
+    };
+    edge({Vec2d(-26.4, 0)});                                          // hem
+    edge({Vec2d(26.4, 0)});                                           // side_r
+    edge(curve(Vec2d(25.3, 28), Vec2d(15.4, 30), Vec2d(13.2, 52)));   // armhole_r
+    edge({Vec2d(13.2, 52)});                                          // shoulder_r
+    edge(curve(Vec2d(8, 55), Vec2d(0, neck_dip), Vec2d(-8, 55)));     // neck
+    edge({Vec2d(-8, 55)});                                            // shoulder_l
+    edge(curve(Vec2d(-13.2, 52), Vec2d(-15.4, 30), Vec2d(-25.3, 28)));  // armhole_l
+    edge({Vec2d(-25.3, 28)});                                         // side_l
+    return p;
+  };
+  Pattern pat;
+  pat.name = "shirt";
+  pat.panels = {panel("front", 46), panel("back", 52)};
+  pat.seams = {{0, 1, 1, 7, true}, {0, 7, 1, 1, true}, {0, 3, 1, 5, true}, {0, 5, 1, 3, true}};
+  for (double spacing : {0.9, 1.2, 1.7, 2.3, 3.1}) {
+    const MeshedPattern m = mesh_pattern(pat, spacing);
+    std::vector<bool> sewn(static_cast<std::size_t>(m.mesh.vertex_count()), false);
+    for (Eigen::Index k = 0; k < m.mesh.seam_pairs.size(); ++k) sewn[static_cast<std::size_t>(m.mesh.seam_pairs(k))] = true;
+    double shortest = 1e9;
+    for (Eigen::Index s = 0; s < m.mesh.springs.cols(); ++s) {
+      const auto a = static_cast<std::size_t>(m.mesh.springs(0, s)), b = static_cast<std::size_t>(m.mesh.springs(1, s));
+      if (m.mesh.kind[static_cast<std::size_t>(s)] == SpringKind::kStructural && m.boundary[a] && m.boundary[b] &&
+          !(sewn[a] && sewn[b]))
+        shortest = std::min(shortest, 100 * double(m.mesh.rest_length[s]));
+    }
+    std::printf("[ along   ] spacing %.1f cm: shortest spring along the outline off the seams %.3f spacings\n",
+                spacing, shortest / spacing);
+    EXPECT_GE(shortest, (0.5 - 1e-4) * spacing) << "spacing " << spacing;
+  }
+}
+
 TEST(Garment, NoCellSpansTheHollowOfANeckline) {
   // a neckline's dip: a circular arc cut into the top of a panel. A cell whose corners the ring snaps onto the arc
   // would span the dip, cloth where the pattern has none, its midpoint (queried with face queries) in the neck
