@@ -70,13 +70,14 @@ const std::vector<Deviation>& deviations() {
        false,
        true},
       {"stretch limit: the relative velocity along an over-stretched spring kept at what ends the step at the "
-       "threshold "
-       "(walking Eq. 5 averaging; directional in the papers' regime)",
+       "threshold (walking Eq. 5), as accumulated impulses warm-started from the last step with the body's contacts "
+       "in the same solve (after Catto 2005; the walking skirt keeps Eq. 5's sweeps, the papers' regime the "
+       "directional rule)",
        "the stretching components set to zero (dressing section 4.3)",
        {"solver.limit=velocity-zero"},
        true,
        false},
-      {"velocity averaging (walking Eq. 5) on the walking body as well (the stable regime's default; the papers' "
+      {"velocity averaging (walking Eq. 5) on the walking body as well (the walking skirt's sweeps; the papers' "
        "regime uses the directional rule on the static body too)",
        "Eq. 5 for static bodies, the directional modification (walking Eq. 6) for moving ones (walking section 3.2)",
        {"solver.limit=directional"},

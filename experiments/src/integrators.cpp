@@ -24,7 +24,7 @@ struct Solver {
   const char* integrator;
   const char* regime;
   bool papers_limit = false;  // the papers' regime's velocity modification on the regime's springs
-  int limit_passes = 0;       // the regime's passes of the velocity limit unless set
+  int limit_passes = 0;       // the regime's passes of its limit unless set
   const char* skin = nullptr;  // body.skin_mm, when set
 };
 
@@ -261,7 +261,8 @@ void integrators(ExperimentContext& ctx) {
       "step slides resting cloth a fraction of a millimetre into a curved surface) and explicit Euler in the "
       "papers' regime (`solver.regime = \"papers\"`: equal point masses, dt 5 ms, springs as soft as Eq. 4 "
       "and Gershgorin need at that dt, the stretch held by the directional velocity limit, 32 passes). The "
-      "stable regime's limit is the velocity limit (walking Eq. 5), 8 passes, run again after the collision response. "
+      "stable regime's limit is `impulses` (walking Eq. 5 as accumulated impulses warm-started from the last step, after "
+      "Catto 2005), 1 pass, run again after the collision response. "
       "Wall time is one thread, collider set-up "
       "included, until sewn and "
       "settled or the phase budgets (1 s + 2 s simulated) run out. The papers' iteration counts are their "

@@ -29,7 +29,7 @@ TEST(Scene, DefaultsWhenEmpty) {
   EXPECT_EQ(s.collider, "is-cpu");
   EXPECT_EQ(s.body.file, "debian:human");
   EXPECT_TRUE(s.garments.empty());
-  EXPECT_EQ(s.solver.limit, "velocity");
+  EXPECT_EQ(s.solver.limit, "impulses");
   EXPECT_EQ(s.collider_options.map_size, 320);
 }
 
@@ -130,7 +130,7 @@ TEST(Scene, ConfigHashFollowsTheEffectiveConfiguration) {
   EXPECT_EQ(hash.find_first_not_of("0123456789abcdef"), std::string::npos) << hash;
   // the same values: another file name, a name, keys in another order, a default spelt out, --set to the same value
   EXPECT_EQ(config_hash(parse_scene(text, "other.toml")), hash);
-  EXPECT_EQ(config_hash(parse_scene("[scene]\nname = \"x\"\n[solver]\nthreshold = 0.05\nlimit = \"velocity\"\n"
+  EXPECT_EQ(config_hash(parse_scene("[scene]\nname = \"x\"\n[solver]\nthreshold = 0.05\nlimit = \"impulses\"\n"
                                     "[[garment]]\nvertices = 400\nfile = \"a.pattern\"\n",
                                     "s.toml")),
             hash);

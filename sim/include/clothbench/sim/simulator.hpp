@@ -68,14 +68,16 @@ struct SolverParams {
   /// share, and the lightest point bounds Eq. 4 and Gershgorin's step: equal ones admit a step several times longer
   MassModel masses = MassModel::kEqual;
   bool allow_unstable_dt = false;        ///< explicit-euler: accept a given dt above the Eq. 4 bound (stability studies)
-  std::string limit = "velocity";        ///< the strain limiter, by name (limiter_names(); limiter.hpp)
+  /// the strain limiter, by name (limiter_names(); limiter.hpp): walking Eq. 5 as warm-started impulses, whose one pass
+  /// holds every limit on the static body where the velocity sweeps take eight (results/limiters.md)
+  std::string limit = "impulses";
   Real threshold = 0.10f;                ///< elongation threshold of the limit, fraction (0.01..0.15 typical)
   Real stiff_factor = 10.f;              ///< the `stiff` limit multiplies every stiffness by this
-  int limit_passes = 8;                  ///< passes of the limit over the springs per call (the most)
+  int limit_passes = 1;                  ///< passes of the limit over the springs per call (the most)
   /// velocity limits run once more after the collision response, each pass followed by stopping motion into the
   /// body of the vertices in contact (the response would otherwise undo the limit where the body holds the cloth).
-  /// Both regimes: walking Eq. 5 with 8 passes after the response holds every limit on the static body and the walking
-  /// dress (the walking skirt takes 16; results/limiters.md lists the cheapest setting per garment and clip)
+  /// Both regimes; the walking scenes need it (the dress: impulses, 3 passes; the skirt: walking Eq. 5's sweeps, 16).
+  /// results/limiters.md lists the cheapest setting per garment and clip
   bool limit_after_response = true;
   Real limit_speed = 2.f;                ///< velocity limits shorten a spring past threshold at most this fast [m/s]
   Real limit_tolerance = 0;              ///< a velocity limit pass's change that moves a point less than this over the
