@@ -48,7 +48,7 @@ Vec2d clear_of_outline(const std::vector<Vec2d>& outline, const Vec2d& q, const 
     moved = at.point + 0.5 * h / at.dist * (moved - at.point);
     at = closest_on_outline(outline, moved);
   }
-  return closest_on_outline(outline, moved).dist > c.dist && inside(outline, moved) ? moved : q;
+  return at.dist > c.dist && inside(outline, moved) ? moved : q;  // `at` is where `moved` is
 }
 
 // Grid nodes inside the outline, and the ring around them snapped onto the outline.

@@ -214,7 +214,8 @@ TEST(Garment, NoSpringAlongTheOutlineOffTheSeamsIsShorterThanHalfASpacing) {
   for (double spacing : {0.9, 1.2, 1.7, 2.3, 3.1}) {
     const MeshedPattern m = mesh_pattern(pat, spacing);
     std::vector<bool> sewn(static_cast<std::size_t>(m.mesh.vertex_count()), false);
-    for (Eigen::Index k = 0; k < m.mesh.seam_pairs.size(); ++k) sewn[static_cast<std::size_t>(m.mesh.seam_pairs(k))] = true;
+    for (Eigen::Index k = 0; k < m.mesh.seam_pairs.size(); ++k)
+      sewn[static_cast<std::size_t>(m.mesh.seam_pairs(k))] = true;
     double shortest = 1e9;
     for (Eigen::Index s = 0; s < m.mesh.springs.cols(); ++s) {
       const auto a = static_cast<std::size_t>(m.mesh.springs(0, s)), b = static_cast<std::size_t>(m.mesh.springs(1, s));
