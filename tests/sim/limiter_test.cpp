@@ -199,8 +199,8 @@ TEST(Limiters, HangingSquare) {
       // do the projection's Newton iterations, but not its first alone (linearised about a sheet that every
       // spring's stretch has turned)
       // (nor the impulses' first pass: at this clock a pass that stops stretching leaves the step's fall to the next)
-      const bool one_pass_holds = std::string(limit) != "velocity" && std::string(limit) != "projection" &&
-                                  std::string(limit) != "impulses";
+      const bool one_pass_holds =
+          std::string(limit) != "velocity" && std::string(limit) != "projection" && std::string(limit) != "impulses";
       if (passes > 1 || one_pass_holds) {
         EXPECT_LE(*s, kThreshold + 0.01f) << limit << " " << passes;
       }
@@ -228,7 +228,8 @@ TEST(Limiters, TwoHeldFrontsWithFreeClothBetween) {
 // the projection's passes are Newton iterations over the whole strip: a few hold what the sweeps need 32 passes for
 TEST(Limiters, ProjectionHoldsTheHeldFrontsInAFewIterations) {
   const auto eight = held_fronts("projection", 8), sweep = held_fronts("velocity", 8);
-  std::printf("[ fronts  ] projection, 8 iterations: %s; velocity, 8 passes: %s\n", show(eight).c_str(), show(sweep).c_str());
+  std::printf("[ fronts  ] projection, 8 iterations: %s; velocity, 8 passes: %s\n", show(eight).c_str(),
+              show(sweep).c_str());
   ASSERT_TRUE(eight.has_value() && sweep.has_value());
   EXPECT_LE(*eight, kThreshold + 0.01f);
   EXPECT_GT(*sweep, kThreshold + 0.01f);
@@ -245,6 +246,47 @@ TEST(Limiters, ImpulsesHoldATautStripInTheStableRegime) {
       ASSERT_TRUE(s.has_value()) << limit << " " << passes;
       EXPECT_LE(*s, kTight + 0.01f) << limit << " " << passes;
     }
+}
+
+// with face queries the body's contacts are quad midpoints too (dressing section 6): `impulses` stops a midpoint's
+// motion into the body although none of its corners touches, with one push shared by the corners
+TEST(Limiters, ImpulsesStopAQuadMidpointMovingIntoTheBody) {
+  ClothMesh c;
+  c.positions.resize(3, 4);
+  c.springs.resize(2, 4);
+  c.springs << 0, 1, 2, 3, 1, 2, 3, 0;
+  c.kind.assign(4, SpringKind::kStructural);
+  c.rest_length = Scalars::Constant(4, 0.1f);
+  c.quads.resize(4, 1);
+  c.quads << 0, 1, 2, 3;
+  Points3 x(3, 4), v(3, 4);
+  x << 0, 0.1f, 0.1f, 0, 0, 0, 0, 0, 0, 0, 0.1f, 0.1f;  // a square in the plane y = 0
+  const Scalars m = Scalars::Constant(4, 0.01f);
+  const Scalars inv_m = Scalars::Constant(4, 100);
+  std::vector<Contact> contacts(5);  // the four vertices, then the quad's midpoint
+  contacts[4].hit = true;
+  contacts[4].normal = Vec3(0, 1, 0);
+  const std::vector<std::vector<int>> merged;
+  LimitState s{c, x, v, m, inv_m, contacts, merged, Vec3(0, -9.81f, 0), 0.001f};
+  const auto down = [&] {
+    v.setZero();
+    v.row(1).setConstant(-1);  // every corner down, into the body below the midpoint
+    v(0, 0) = -0.5f;           // and one sideways, which the body does not stop
+  };
+  for (bool after_response : {false, true}) {
+    const auto limit = make_limiter("impulses", {0.1f, 4});
+    down();
+    limit->limit_velocities(s, false);                             // the step's first call gathers the contacts
+    if (after_response) down(), limit->limit_velocities(s, true);  // the call after the response goes on with them
+    EXPECT_NEAR(v.row(1).mean(), 0, 1e-5f) << after_response;      // the midpoint no longer moves into the body
+    EXPECT_FLOAT_EQ(v(0, 0), -0.5f) << after_response;
+    for (int k = 1; k < 4; ++k) EXPECT_FLOAT_EQ(v(1, k), v(1, 0)) << after_response;  // one push, a quarter each
+  }
+  contacts[4].hit = false;  // no contact: nothing stops the corners
+  v.setZero();
+  v.row(1).setConstant(-1);
+  make_limiter("impulses", {0.1f, 4})->limit_velocities(s, false);
+  EXPECT_FLOAT_EQ(v.row(1).mean(), -1);
 }
 
 TEST(Limiters, SleeveOnASwingingArm) {

@@ -5,6 +5,8 @@
 // relative velocity that ends the step at (1 + threshold) l0. A vertex in contact gets an accumulated impulse along
 // the contact normal that only pushes out, so the limit and the body share one solve: a limit that pulled a spring
 // lying on the body into it, undone by the response afterwards, would be found again at every pass and every step.
+// With face queries a quad whose midpoint is in contact gets one too, shared by its four corners (the midpoint's
+// velocity is theirs averaged, dressing section 6): else the call after the response pulls corners back in.
 // A step starts from half the impulses the last step's first call ended with (kWarm). The shortening of a spring
 // already past max_len (at `speed` at most, as the sweeps do) moves the positions over the step and is taken out of
 // the velocities afterwards (split impulses, after Catto): kept, the next step would correct the same excess again.
@@ -43,7 +45,7 @@ class Impulses final : public Limiter {
     Real warm = 0;     // what the step's first call ended with: the next step starts from it
   };
   struct Touch {
-    int i;          // a vertex in contact
+    int i;          // a vertex in contact, or with face queries a quad whose midpoint is (contacts[nv + quad])
     Real push = 0;  // the body's accumulated impulse on it along the contact normal [kg m/s]
   };
 
@@ -53,14 +55,17 @@ class Impulses final : public Limiter {
   void warm_start(LimitState& s);
   Real pass_springs(LimitState& s);
   Real pass_touches(LimitState& s);
+  Real pass_face_touches(LimitState& s);
+  Real face_inverse_mass(const ClothMesh& mesh, int q) const;
   void keep_warm();
   std::size_t point(int i) const { return static_cast<std::size_t>(point_[static_cast<std::size_t>(i)]); }
   Real w(int i) const { return w_[static_cast<std::size_t>(i)]; }
 
   LimiterParams params_;
   std::vector<Link> links_;
-  std::vector<Touch> touches_;   // this step's
-  std::vector<Real> push_warm_;  // per vertex: the body's impulse at the end of the last step's first call
+  std::vector<Touch> touches_;       // this step's vertices
+  std::vector<Touch> face_touches_;  // this step's quads
+  std::vector<Real> push_warm_;  // per vertex, then quad: the body's impulse at the end of the last step's first call
   std::vector<int> point_;       // per vertex: the vertex whose velocity it moves with (its sewn group's first)
   Points3 shortening_;           // per vertex: the velocity the shortening gave its point this step [m/s]
   std::vector<Real> w_;          // per vertex: the inverse mass of its point (a sewn group's: 1 / the members' sum)
@@ -91,12 +96,26 @@ void Impulses::gather_points(const LimitState& s) {
 }
 
 void Impulses::gather_touches(const LimitState& s) {
-  touches_.clear();
+  touches_.clear(), face_touches_.clear();
   if (s.contacts.empty()) return;
-  push_warm_.resize(static_cast<std::size_t>(s.x.cols()), 0);
-  for (Eigen::Index i = 0; i < s.x.cols(); ++i)
+  push_warm_.resize(s.contacts.size(), 0);
+  const Eigen::Index nv = s.x.cols();
+  for (Eigen::Index i = 0; i < nv; ++i)
     if (s.contacts[static_cast<std::size_t>(i)].hit && w(static_cast<int>(i)) > 0)
       touches_.push_back({static_cast<int>(i)});
+  for (std::size_t c = static_cast<std::size_t>(nv); c < s.contacts.size(); ++c)
+    if (s.contacts[c].hit && face_inverse_mass(s.mesh, static_cast<int>(c) - static_cast<int>(nv)) > 0)
+      face_touches_.push_back({static_cast<int>(c) - static_cast<int>(nv)});
+}
+
+Real Impulses::face_inverse_mass(const ClothMesh& mesh, int q) const {
+  // an impulse J at the midpoint, J/4 to each corner, changes the midpoint's velocity by J times this: corners that
+  // share a point (sewn) move it together
+  Real sum = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      if (point(mesh.quads(a, q)) == point(mesh.quads(b, q))) sum += w(mesh.quads(b, q));
+  return sum / 16;
 }
 
 void Impulses::warm_start(LimitState& s) {
@@ -104,6 +123,14 @@ void Impulses::warm_start(LimitState& s) {
   for (Touch& t : touches_) {
     t.push = kWarm * push_warm_[static_cast<std::size_t>(t.i)];
     s.v.col(point(t.i)) += t.push * w(t.i) * s.contacts[static_cast<std::size_t>(t.i)].normal;
+  }
+  const auto nv = static_cast<std::size_t>(s.x.cols());
+  for (Touch& t : face_touches_) {
+    t.push = kWarm * push_warm_[nv + static_cast<std::size_t>(t.i)];
+    for (int k = 0; k < 4; ++k) {
+      const int i = s.mesh.quads(k, t.i);
+      s.v.col(point(i)) += Real(0.25) * t.push * w(i) * s.contacts[nv + static_cast<std::size_t>(t.i)].normal;
+    }
   }
   for (Link& l : links_) {
     l.impulse = kWarm * l.warm, l.excess = 0;
@@ -179,10 +206,35 @@ Real Impulses::pass_touches(LimitState& s) {
   return largest;
 }
 
+Real Impulses::pass_face_touches(LimitState& s) {
+  // the body stops the motion into it of the quad midpoints in contact: dressing section 6's midpoint, one impulse
+  // that only pushes out, a quarter to each corner
+  const auto nv = static_cast<std::size_t>(s.x.cols());
+  Real largest = 0;
+  for (Touch& t : face_touches_) {
+    const Contact& c = s.contacts[nv + static_cast<std::size_t>(t.i)];
+    Vec3 mid = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) mid += Real(0.25) * s.v.col(point(s.mesh.quads(k, t.i)));
+    const Real wq = face_inverse_mass(s.mesh, t.i);
+    const Real next = std::max(Real(0), t.push - (mid - c.body_velocity).dot(c.normal) / wq);
+    const Real change = next - t.push;
+    if (change == 0) continue;
+    t.push = next;
+    for (int k = 0; k < 4; ++k) {
+      const int i = s.mesh.quads(k, t.i);
+      s.v.col(point(i)) += Real(0.25) * change * w(i) * c.normal;
+    }
+    largest = std::max(largest, std::abs(change) * wq);
+  }
+  return largest;
+}
+
 void Impulses::keep_warm() {
   for (Link& l : links_) l.warm = l.impulse;
   std::fill(push_warm_.begin(), push_warm_.end(), Real(0));
   for (const Touch& t : touches_) push_warm_[static_cast<std::size_t>(t.i)] = t.push;
+  const std::size_t nv = point_.size();
+  for (const Touch& t : face_touches_) push_warm_[nv + static_cast<std::size_t>(t.i)] = t.push;
 }
 
 void Impulses::limit_velocities(LimitState& s, bool contacts_hold) {
@@ -193,7 +245,7 @@ void Impulses::limit_velocities(LimitState& s, bool contacts_hold) {
   // and what it adds (the response's share) is not carried into the next step
   if (!contacts_hold) gather_touches(s), warm_start(s), shortening_.setZero(3, s.x.cols());
   for (int k = 0; k < params_.passes; ++k) {
-    const Real largest = std::max(pass_springs(s), pass_touches(s));
+    const Real largest = std::max({pass_springs(s), pass_touches(s), pass_face_touches(s)});
     ++passes_;
     if (!(largest * s.dt > params_.tolerance)) break;
   }
