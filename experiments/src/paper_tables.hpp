@@ -169,6 +169,20 @@ inline std::string summary_run(const RunResult& r) {
   return sew + ", " + verdict;
 }
 
+// whether a summary's two rows are a verdict's evidence: a row that misses any limit, strain included, is not
+inline bool both_meet_the_limits(const RunResult& a, const RunResult& b) {
+  return limit_misses(a).empty() && limit_misses(b).empty();
+}
+
+// "; the shirt and the dress left out (a row misses a limit)" for the garments a verdict cannot count, else ""
+inline std::string left_out(const std::vector<std::string>& garments) {
+  if (garments.empty()) return "";
+  std::string s = "; left out, a row misses a limit: the ";
+  for (std::size_t i = 0; i < garments.size(); ++i)
+    s += (i ? (i + 1 == garments.size() ? " and the " : ", the ") : "") + garments[i];
+  return s;
+}
+
 // the colliders a summary sets against each other: the lead image-space and object-space ones, else the first built
 // of each family in the tables
 struct SummaryPair {

@@ -62,8 +62,28 @@ PowerFit power_fit(const std::vector<double>& x, const std::vector<double>& y, d
   f.k_low = kHigh, f.k_high = kLow;
   for (std::size_t i = 0; i < ks.size(); ++i)
     if (sses[i] <= bound) f.k_low = std::min(f.k_low, ks[i]), f.k_high = std::max(f.k_high, ks[i]);
-  f.at_grid_edge = f.k_low <= kLow || f.k_high >= kHigh;
+  f.at_grid_edge = f.k_low <= kLow + kStep / 2 || f.k_high >= kHigh - kStep / 2;  // the grid sums steps: not exact
   return f;
+}
+
+Growth judge_growth(const PowerFit& medians, const std::vector<PowerFit>& series) {
+  if (medians.at_grid_edge) return Growth::kUndecided;
+  if (medians.linear()) return Growth::kLinear;
+  const bool above = medians.k_low > 1;
+  for (const PowerFit& s : series)
+    if ((s.k > 1) != above) return Growth::kStraddles;
+  return above ? Growth::kAbove : Growth::kBelow;
+}
+
+const char* growth_text(Growth g) {
+  switch (g) {
+    case Growth::kLinear: return "linear (1 inside the interval)";
+    case Growth::kAbove: return "above linear (every repeated series too)";
+    case Growth::kBelow: return "below linear (every repeated series too)";
+    case Growth::kUndecided: return "undecided (the sizes do not bound the exponent)";
+    case Growth::kStraddles: return "undecided (the interval excludes 1, the repeated series lie on both sides of it)";
+  }
+  return "";
 }
 
 }  // namespace clothbench

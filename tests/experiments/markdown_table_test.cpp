@@ -1,8 +1,10 @@
-// MarkdownTable (experiments/src/markdown_table.cpp) and linear_fit (experiments/src/statistics.cpp).
+// MarkdownTable (experiments/src/markdown_table.cpp); linear_fit, power_fit and judge_growth
+// (experiments/src/statistics.cpp).
 #include "clothbench/experiments/markdown_table.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "clothbench/experiments/statistics.hpp"
@@ -48,6 +50,26 @@ TEST(Statistics, PowerFitFindsTheExponentAndItsInterval) {
   EXPECT_FALSE(l.at_grid_edge);
   EXPECT_LT(l.k_high - l.k_low, 0.5);
   EXPECT_EQ(power_fit({1, 2, 3}, {1, 2, 3}).k, 0);  // too few points: no fit
+}
+
+// the medians' interval decides; repeated series on both sides of 1 withhold a departure, never make one
+TEST(Statistics, GrowthIsJudgedOnTheMediansAndTheRepeatedSeries) {
+  const std::vector<double> x{500, 1000, 2000, 3500, 5000, 8000};
+  auto series = [&](double k) {
+    std::vector<double> y;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      y.push_back((1 + 10 * std::pow(x[i] / 1000, k)) * (1 + 0.01 * (i % 2 ? 1 : -1)));  // +-1 %
+    return power_fit(x, y);
+  };
+  const PowerFit line = series(1), steep = series(1.3), flat = series(0.8);
+  EXPECT_EQ(judge_growth(line, {series(0.7), series(1.4)}), Growth::kLinear);
+  EXPECT_EQ(judge_growth(steep, {series(1.2), series(1.4)}), Growth::kAbove);
+  EXPECT_EQ(judge_growth(flat, {series(0.7), series(0.9)}), Growth::kBelow);
+  EXPECT_EQ(judge_growth(steep, {series(1.3), series(0.9)}), Growth::kStraddles);
+  PowerFit unbounded = steep;
+  unbounded.at_grid_edge = true;
+  EXPECT_EQ(judge_growth(unbounded, {}), Growth::kUndecided);
+  EXPECT_STRNE(growth_text(Growth::kStraddles), growth_text(Growth::kAbove));
 }
 
 }  // namespace

@@ -18,4 +18,12 @@ struct PowerFit {
 };
 PowerFit power_fit(const std::vector<double>& x, const std::vector<double>& y, double confidence = 0.95);
 
+/// How time grows with size, judged on the fit to the medians and on the exponents of the repeated series (run j of
+/// every size: a series of its own, so that drift between runs shows). The medians' interval decides; the series can
+/// only withhold a departure from linear, when their exponents lie on both sides of 1.
+enum class Growth { kLinear, kAbove, kBelow, kUndecided, kStraddles };
+Growth judge_growth(const PowerFit& medians, const std::vector<PowerFit>& series);
+/// The verdict in words: "linear (1 inside the interval)", "above linear", ...
+const char* growth_text(Growth g);
+
 }  // namespace clothbench
