@@ -16,7 +16,6 @@
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
 #include "clothbench/experiments/row_names.hpp"
-#include "clothbench/experiments/statistics.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/simulator.hpp"
@@ -224,80 +223,6 @@ Claim speed_claim(ExperimentContext& ctx) {
                      ? "; embree is slower at every placement (" + num(spread_lo, 1) + "-" + num(spread_hi, 1) + "x)"
                      : "; not beyond the spread: embree is faster at some placement (" + num(spread_lo, 1) + "-" +
                            num(spread_hi, 1) + "x)";
-  return c;
-}
-
-// dressing-f8's series per "GARMENT COLLIDER": vertices, the median run's time, and each repetition's times (the
-// j-th run of every size)
-struct TimeSeries {
-  std::vector<double> x, y;
-  std::map<int, std::vector<double>> repeated;
-};
-std::map<std::string, TimeSeries> f8_series(ExperimentContext& ctx) {
-  std::map<std::string, TimeSeries> out;
-  std::ifstream in(ctx.path("dressing-f8.json"));
-  const auto doc = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
-  if (doc.is_discarded() || !doc.contains("benchmarks")) return out;
-  // dressing-f8/GARMENT-N/COLLIDER
-  const auto series_of = [](const std::string& name) {
-    const auto a = name.find('/'), dash = name.find('-', a), b = name.rfind('/');
-    return name.substr(a + 1, dash - a - 1) + " " + name.substr(b + 1);
-  };
-  for (const auto& [name, r] : rows_of(ctx, "dressing-f8")) {
-    auto& s = out[series_of(name)];
-    s.x.push_back(r["vertices"].get<double>());
-    s.y.push_back(row_time_ms(r, "real_time"));
-  }
-  // the runs in the file's order: sizes ascending within a series, as the medians above (rows_of sorts by name)
-  std::map<std::string, std::vector<std::pair<double, const nlohmann::json*>>> runs;
-  for (const auto& r : doc["benchmarks"])
-    if (r.value("run_type", "iteration") != "aggregate" && r.contains("repetition_index"))
-      runs[series_of(r.value("name", ""))].emplace_back(r["vertices"].get<double>(), &r);
-  for (auto& [key, rs] : runs) {
-    std::stable_sort(rs.begin(), rs.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
-    for (const auto& [v, r] : rs)
-      out[key].repeated[r->value("repetition_index", 0)].push_back(row_time_ms(*r, "real_time"));
-  }
-  return out;
-}
-
-Claim linear_claim(ExperimentContext& ctx) {
-  Claim c{"dressing Fig. 8", "time per iteration is linear in cloth vertices", "[dressing-f8](dressing-f8.md)", "",
-          kNotRun};
-  const auto all = f8_series(ctx);
-  if (all.empty()) return c;
-  // the verdict is the paper's figure's: the shirt with image space; the rest beside it. Each series is judged as
-  // dressing-f8 judges it: the medians' interval, a departure only where every repeated series departs alike
-  int linear = 0, departs = 0, judged = 0;
-  for (auto [series, s] : all) {
-    std::vector<std::size_t> order(s.x.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return s.x[i] < s.x[j]; });
-    std::vector<double> x, y;
-    for (std::size_t i : order) x.push_back(s.x[i]), y.push_back(s.y[i]);
-    const PowerFit f = power_fit(x, y);
-    std::vector<PowerFit> repeated;
-    for (const auto& [j, ys] : s.repeated)
-      if (ys.size() == x.size()) repeated.push_back(power_fit(x, ys));
-    const Growth g = judge_growth(f, repeated);
-    c.numbers += series + " k " + num(f.k, 2) + " (" + num(f.k_low, 2) + "-" + num(f.k_high, 2) + ", " +
-                 std::to_string(repeated.size()) + " series); ";
-    if (series.rfind("shirt is-", 0) != 0) continue;
-    ++judged;
-    linear += g == Growth::kLinear ? 1 : 0;
-    departs += g == Growth::kAbove || g == Growth::kBelow ? 1 : 0;
-  }
-  c.numbers +=
-      "exponent k of time = a + b n^k fitted to the medians, 95 % interval; the runs per size in "
-      "[dressing-f8](dressing-f8.md)";
-  const int open = judged - linear - departs;
-  c.verdict = judged == 0        ? "untestable: no image-space series of the shirt"
-              : linear == judged ? "holds: 1 lies inside the exponent's interval for every image-space collider"
-              : departs > 0      ? "fails for " + std::to_string(departs) + " of " + std::to_string(judged) +
-                                  " image-space colliders (the interval excludes 1, every repeated series alike)" +
-                                  (open ? "; " + std::to_string(open) + " undecided" : "")
-                            : "does not hold beyond the spread: undecided for " + std::to_string(open) + " of " +
-                                  std::to_string(judged) + " image-space colliders, linear for the rest";
   return c;
 }
 
@@ -513,34 +438,6 @@ Claim provot_claim() {
   return c;
 }
 
-Claim directional_claim(ExperimentContext& ctx) {
-  Claim c{"walking Fig. 8", "directional modification beats averaging on a moving sphere",
-          "[walking-f8](walking-f8.md)", "", kNotRun};
-  auto rows = rows_of(ctx, "walking-f8");
-  const auto& literal = rows["walking-f8/tablecloth/directional-literal"];
-  const auto& d = rows["walking-f8/tablecloth/directional"];
-  const auto& v = rows["walking-f8/tablecloth/velocity"];
-  if (d.is_null() || v.is_null() || literal.is_null() || !v.contains("lag_cm")) return c;
-  const auto diverged = [](const nlohmann::json& r) { return r["diverged"].get<int>() != 0; };
-  const auto show = [&](const nlohmann::json& r) {
-    return diverged(r) ? std::string("diverged")
-                       : "strain max during motion " + num(100 * r.value("animate_strain_max", NAN), 1) + " %, lag " +
-                             num(r.value("lag_cm", NAN), 1) + " cm";
-  };
-  c.numbers = "the paper's rule (Eq. 6 as stated): " + show(literal) + "; ours (guarded): " + show(d) +
-              "; velocity averaging: " + show(v);
-  // the verdict is the paper's rule's; ours is reported beside it
-  const auto beats = [&](const nlohmann::json& r) {
-    return !diverged(r) && r.value("animate_strain_max", NAN) < v.value("animate_strain_max", NAN) &&
-           r.value("lag_cm", NAN) <= v.value("lag_cm", NAN);
-  };
-  c.verdict = diverged(literal) ? "fails with the paper's rule: it diverges on this scene"
-              : beats(literal)  ? "holds with the paper's rule (less strain and no more lag than averaging)"
-                                : "fails with the paper's rule (more strain or more lag than averaging)";
-  c.verdict += std::string("; ours ") + (beats(d) ? "beats averaging" : "does not (more strain or more lag)");
-  return c;
-}
-
 // walking Eq. 16 where the paper uses it, on the walking body: walking-t2's is-cpu rows of both garments with and
 // without it (stable regime, walk_07_01), judged at every frame; appends the figures to `numbers`
 std::string reaction_walking(ExperimentContext& ctx, std::string& numbers) {
@@ -628,12 +525,12 @@ std::vector<std::string> summary(const std::vector<Claim>& list) {
 void claims(ExperimentContext& ctx) {
   const BodyModel model = load_body(kDebianHumanBody);
   std::vector<Claim> list{iterations_claim(ctx),
-                          linear_claim(ctx),
+                          claim_rows::linear_claim(ctx),
                           faces_claim(ctx, model.rest()),
                           map_size_claim(model.rest()),
                           side_layer_claim(model.rest()),
                           provot_claim(),
-                          directional_claim(ctx),
+                          claim_rows::directional_claim(ctx),
                           reaction_claim(ctx),
                           speed_claim(ctx)};
   list.push_back(claim_rows::face_queries_claim(ctx));

@@ -1,7 +1,7 @@
 #pragma once
 // What the claims experiment's two files share: a claim's row and the rows of a page an experiment wrote before
 // it. claims.cpp measures its claims and reads dressing-t1's and walking-t2's pages; claims_pages.cpp judges the
-// claims that rest on minimal's and pareto's pages.
+// claims that rest on minimal's, pareto's, dressing-f8's and walking-f8's pages.
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -27,5 +27,9 @@ Claim face_queries_claim(ExperimentContext& ctx);
 Claim box_tree_claim(ExperimentContext& ctx);
 // beyond the papers: image space with six views against embree's crossings and cost (pareto's page)
 Claim views_claim(ExperimentContext& ctx);
+// dressing Fig. 8: time per iteration grows linearly with the cloth's vertices (dressing-f8's page)
+Claim linear_claim(ExperimentContext& ctx);
+// walking Fig. 8: the directional limit beats averaging on a moving sphere (walking-f8's page)
+Claim directional_claim(ExperimentContext& ctx);
 
 }  // namespace clothbench::claim_rows

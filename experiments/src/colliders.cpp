@@ -75,59 +75,82 @@ std::vector<Variant> variants(ExperimentContext& ctx) {
 }
 
 // table 1: set-up, per-frame update, query costs and accuracy on the walking body
+// the point sets the body table queries, and the exact answer for `near`
+struct BodyPoints {
+  Points3 near, far, inside, moved;  // moved: `near` 1 mm on, the next step
+  std::vector<Contact> ref;
+};
+
+// one collider on the body: set-up, update, query cost per set, the coherent search share, accuracy
+struct BodyTimes {
+  double setup = 0, update = 0, ns_near = 0, cpu_near = 0, ns_far = 0, ns_inside = 0, next = 0, searched = 0;
+  bool searches = false;
+  Agreement acc;
+};
+
+BodyTimes time_on_body(const Variant& v, const BodyFrame& a, const BodyFrame& b, const BodyPoints& p) {
+  BodyTimes out;
+  ColliderOptions options;
+  options.coherent = v.coherent;
+  auto c = make_collider(v.collider, options);
+  c->set_body(a);
+  out.setup = c->stats().setup_ms;
+  out.acc = agreement(answer(*c, p.near), p.ref);  // also the first query of `near`
+  const std::int64_t searches = c->stats().searches, points = c->stats().points;
+  out.next = query_ns(*c, p.moved);
+  out.searched = 100.0 * double(c->stats().searches - searches) / double(c->stats().points - points);
+  out.searches = c->stats().searches > 0;
+  // each set queried once: a coherent collider keeps memory per point array, so each first query is cold
+  auto cold = make_collider(v.collider, options);
+  cold->set_body(a);
+  out.ns_near = query_ns(*cold, p.near, &out.cpu_near);
+  out.ns_far = query_ns(*cold, p.far);
+  out.ns_inside = query_ns(*cold, p.inside);
+  for (int k = 0; k < 2; ++k) cold->update_body(k % 2 ? a : b);
+  out.update = cold->stats().update_ms / double(cold->stats().updates);
+  return out;
+}
+
 std::string body_table(ExperimentContext& ctx, const std::vector<Variant>& list) {
   const BodyModel model = load_body(data_path("body/mh_female_walk.glb"));
   const int walk = model.animation_index("walk_07_01");
   const BodyFrame a = model.frame(walk, 1.0, true), b = model.frame(walk, 1.0 + 1.0 / 30, true);
   const int n = ctx.quick() ? 500 : 5000;
-  const Points3 near = points_off_surface(a, n, -0.01f, 0.01f, 1), far = points_off_surface(a, n, 0.10f, 0.20f, 2),
-                inside = points_off_surface(a, n, -0.03f, -0.01f, 3);
-  Points3 moved = near;  // the next step: every point 1 mm further along some direction
+  BodyPoints p{points_off_surface(a, n, -0.01f, 0.01f, 1),
+               points_off_surface(a, n, 0.10f, 0.20f, 2),
+               points_off_surface(a, n, -0.03f, -0.01f, 3),
+               Points3(),
+               {}};
+  p.moved = p.near;  // the next step: every point 1 mm further along some direction
   std::mt19937 rng(4);
   std::normal_distribution<Real> g(0, 1);
-  for (Eigen::Index i = 0; i < moved.cols(); ++i) moved.col(i) += 0.001f * Vec3(g(rng), g(rng), g(rng)).normalized();
+  for (Eigen::Index i = 0; i < p.moved.cols(); ++i)
+    p.moved.col(i) += 0.001f * Vec3(g(rng), g(rng), g(rng)).normalized();
   BruteForceCollider brute;
   brute.set_body(a);
-  const std::vector<Contact> ref = answer(brute, near);
+  p.ref = answer(brute, p.near);
   MarkdownTable t({"collider", "set-up [ms]", "update per frame [ms]", "near [ns/point]", "far [ns/point]",
                    "inside [ns/point]", "near, next step [ns/point]", "searched next step [%]", "hit agreement [%]",
                    "depth error max [mm]", "normal error max [deg]"});
   for (const Variant& v : list) {
-    ColliderOptions options;
-    options.coherent = v.coherent;
-    auto c = make_collider(v.collider, options);
-    c->set_body(a);
-    const double setup = c->stats().setup_ms;
-    const Agreement acc = agreement(answer(*c, near), ref);  // also the first query of `near`
-    const std::int64_t searches = c->stats().searches, points = c->stats().points;
-    const double next = query_ns(*c, moved);
-    const double searched = 100.0 * double(c->stats().searches - searches) / double(c->stats().points - points);
-    // each set queried once: a coherent collider keeps memory per point array, so each first query is cold
-    auto cold = make_collider(v.collider, options);
-    cold->set_body(a);
-    double cpu_near = 0;
-    const double ns_near = query_ns(*cold, near, &cpu_near), ns_far = query_ns(*cold, far),
-                 ns_inside = query_ns(*cold, inside);
-    for (int k = 0; k < 2; ++k) cold->update_body(k % 2 ? a : b);
-    const double update = cold->stats().update_ms / double(cold->stats().updates);
-    t.row({v.label, num(setup, 1), num(update, 1), num(ns_near, 0), num(ns_far, 0), num(ns_inside, 0), num(next, 0),
-           c->stats().searches > 0 ? num(searched, 1) : "-", num(acc.hits_pct, 2), num(acc.depth_mm, 3),
-           num(acc.normal_deg, 2)});
-    nlohmann::json row{{"name", "colliders/body/" + v.label},
-                       {"run_type", "iteration"},
-                       {"iterations", 1},
-                       {"real_time", ns_near},
-                       {"cpu_time", cpu_near},
-                       {"time_unit", "ns"},
-                       {"setup_ms", setup},
-                       {"update_ms", update},
-                       {"far_ns", ns_far},
-                       {"inside_ns", ns_inside},
-                       {"next_step_ns", next},
-                       {"hit_agreement_pct", acc.hits_pct},
-                       {"depth_error_max_mm", acc.depth_mm},
-                       {"normal_error_max_deg", acc.normal_deg}};
-    ctx.add_row(row);
+    const BodyTimes m = time_on_body(v, a, b, p);
+    t.row({v.label, num(m.setup, 1), num(m.update, 1), num(m.ns_near, 0), num(m.ns_far, 0), num(m.ns_inside, 0),
+           num(m.next, 0), m.searches ? num(m.searched, 1) : "-", num(m.acc.hits_pct, 2), num(m.acc.depth_mm, 3),
+           num(m.acc.normal_deg, 2)});
+    ctx.add_row({{"name", "colliders/body/" + v.label},
+                 {"run_type", "iteration"},
+                 {"iterations", 1},
+                 {"real_time", m.ns_near},
+                 {"cpu_time", m.cpu_near},
+                 {"time_unit", "ns"},
+                 {"setup_ms", m.setup},
+                 {"update_ms", m.update},
+                 {"far_ns", m.ns_far},
+                 {"inside_ns", m.ns_inside},
+                 {"next_step_ns", m.next},
+                 {"hit_agreement_pct", m.acc.hits_pct},
+                 {"depth_error_max_mm", m.acc.depth_mm},
+                 {"normal_error_max_deg", m.acc.normal_deg}});
   }
   std::ostringstream out;
   out << "## On the body\n\nThe walking body (" << a.triangle_count() << " triangles) at 1 s of `walk_07_01`; " << n
@@ -227,6 +250,35 @@ std::string shirt_table(ExperimentContext& ctx, const std::vector<Variant>& list
 }
 
 // table 3: the image-space maps per renderer and map size, on the walking body (a frame as update_body draws it)
+// the map settings the renderer table times
+struct MapSetting {
+  int size, views, layers;
+  bool floats;
+};
+
+// one renderer at one setting: its mean update over `frames` frames moving between a and b [ms], and its row
+double time_maps(ExperimentContext& ctx, const std::string& name, const MapSetting& s, const BodyFrame& a,
+                 const BodyFrame& b, int frames, std::string& device) {
+  ColliderOptions o;
+  o.map_size = s.size;
+  o.views = s.views;
+  o.layers = s.layers;
+  o.float_maps = s.floats;
+  auto c = make_collider(name, o);
+  c->set_body(a);  // the first frame compiles shaders: set-up
+  for (int k = 0; k < frames; ++k) c->update_body(k % 2 ? a : b);
+  const double ms = c->stats().update_ms / double(c->stats().updates);
+  device = c->device();
+  ctx.add_row({{"name", "colliders/maps/" + name + "/" + std::to_string(s.size) + "^2/" + std::to_string(s.views) +
+                            "x" + std::to_string(s.layers) + "/" + (s.floats ? "float" : "8-bit")},
+               {"run_type", "iteration"},
+               {"iterations", frames},
+               {"real_time", ms},
+               {"time_unit", "ms"},
+               {"device", device}});
+  return ms;
+}
+
 std::string renderer_table(ExperimentContext& ctx) {
   const BodyModel model = load_body(data_path("body/mh_female_walk.glb"));
   const int walk = model.animation_index("walk_07_01");
@@ -234,11 +286,7 @@ std::string renderer_table(ExperimentContext& ctx) {
   const int frames = ctx.quick() ? 2 : 20;
   const std::vector<std::string> renderers =
       ctx.colliders([](const ColliderInfo& c) { return in_speed_tables(c) && c.family == Family::kImageSpace; });
-  struct Setting {
-    int size, views, layers;
-    bool floats;
-  };
-  std::vector<Setting> settings;
+  std::vector<MapSetting> settings;
   for (const int size : {320, 512, 1024})
     for (const bool floats : {true, false}) settings.push_back({size, 2, 1, floats});
   settings.push_back({320, 6, 5, true});  // the walking scenes' cube of views, five layers peeled
@@ -247,31 +295,16 @@ std::string renderer_table(ExperimentContext& ctx) {
   MarkdownTable t(header);
   std::string devices;
   bool software = true;  // every renderer drew on the CPU (Mesa's llvmpipe or ours)
-  for (const Setting& s : settings) {
+  for (const MapSetting& s : settings) {
     std::vector<std::string> row{std::to_string(s.size) + "^2",
                                  std::to_string(s.views) + " x " + std::to_string(s.layers),
                                  s.floats ? "float" : "8-bit"};
     for (const auto& name : renderers) {
-      ColliderOptions o;
-      o.map_size = s.size;
-      o.views = s.views;
-      o.layers = s.layers;
-      o.float_maps = s.floats;
-      auto c = make_collider(name, o);
-      c->set_body(a);  // the first frame compiles shaders: set-up
-      for (int k = 0; k < frames; ++k) c->update_body(k % 2 ? a : b);
-      const double ms = c->stats().update_ms / double(c->stats().updates);
-      row.push_back(num(ms, 2));
-      software = software && cpu_device(c->device());
+      std::string device;
+      row.push_back(num(time_maps(ctx, name, s, a, b, frames, device), 2));
+      software = software && cpu_device(device);
       if (s.size == 320 && s.views == 2 && s.floats)
-        devices += "- `" + name + "`: " + (c->device().empty() ? "-" : c->device()) + "\n";
-      ctx.add_row({{"name", "colliders/maps/" + name + "/" + row[0] + "/" + std::to_string(s.views) + "x" +
-                                std::to_string(s.layers) + "/" + row[2]},
-                   {"run_type", "iteration"},
-                   {"iterations", frames},
-                   {"real_time", ms},
-                   {"time_unit", "ms"},
-                   {"device", c->device()}});
+        devices += "- `" + name + "`: " + (device.empty() ? "-" : device) + "\n";
     }
     t.row(row);
   }

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "clothbench/experiments/row_names.hpp"
 #include "clothbench/experiments/statistics.hpp"
 #include "experiment_list.hpp"
 #include "paper_tables.hpp"
@@ -44,7 +45,7 @@ Series measure(ExperimentContext& ctx, const std::string& garment, const std::st
                                   "stop.max_iterations=" + std::to_string(ctx.quick() ? 10 : 100)};
     for (const auto& o : papers_detection(c)) sets.push_back(o);  // the papers' detection, as the paper tables
     const RunResult& r = ctx.run("dressing/" + garment + ".toml", c, sets, {}, repetitions);
-    ctx.add_run(r, "dressing-f8/" + garment + "-" + std::to_string(n) + "/" + c);
+    ctx.add_run(r, row_names::dressing_f8(garment, n, c));
     const auto runs = ctx.repetitions_of(r);
     s.ys.resize(runs.size());
     std::vector<double> ms;

@@ -10,62 +10,32 @@ namespace clothbench {
 
 namespace {
 
-void durupinar_f6(ExperimentContext& ctx) {
-  struct G {
-    const char* product;
-    const char* scene;
-    int vertices;
-  };
-  const G garments[] = {{"skirt", "durupinar/skirt.toml", 1400}, {"trousers", "durupinar/trousers.toml", 2774}};
-  MarkdownTable t({"garment", "collider", "vertices", "seam pairs", "sew iterations", "sewing time [s]", "ms/iteration first 10 %",
-                   "ms/iteration last 10 %", "sewn", "seam gap [mm]", "paper vertices", "paper seams", "paper sewing time [s]"});
-  nlohmann::json series = nlohmann::json::array();
-  std::vector<std::string> ours;  // per garment and collider: its total sewing time, for the summary
-  RunOptions trace;
-  trace.trace = true;
-  // image space (ours) and an exact object-space collider (Durupinar used an AABB tree; embree stands for it)
-  for (std::size_t i = 0; i < 2; ++i)
-  for (const auto& collider : ctx.colliders({"is-cpu", "embree"})) {
-    const auto& g = garments[i];
-    std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices), "stop.drape_max_s=0"};
-    if (ctx.quick()) sets.push_back("stop.max_iterations=60");
-    const RunResult& r = ctx.run(g.scene, collider, sets, trace);
-    const auto& ms = r.sew_iteration_ms;
-    const std::size_t tenth = std::max<std::size_t>(1, ms.size() / 10);
-    double first = 0, last = 0;
-    for (std::size_t k = 0; k < tenth && k < ms.size(); ++k) {
-      first += ms[k] / double(tenth);
-      last += ms[ms.size() - 1 - k] / double(tenth);
-    }
-    const auto& p = paper::kDurupinarF6[i];
-    t.row({g.product, r.collider, std::to_string(r.vertices), std::to_string(r.mesh.seam_pairs.cols()),
-           std::to_string(r.sew.iterations), num(r.sew.wall_ms / 1e3, 3), num(first, 3), num(last, 3),
-           r.sew.reached ? "yes" : "no", num(r.seam_gap_max_mm, 1), std::to_string(p.vertices), std::to_string(p.seams),
-           num(p.total_sewing_s, 3)});
-    ctx.add_run(r, std::string("durupinar-f6/") + g.product + "/" + r.collider);
-    ours.push_back(std::string(g.product) + " " + collider + " " +
-                   (r.sew.reached ? "sewn in " + num(r.sew.wall_ms / 1e3, 2) + " s"
-                                  : "not sewn in " + num(r.sew.wall_ms / 1e3, 2) + " s") +
-                   " (" + std::to_string(r.mesh.seam_pairs.cols()) + " seam pairs, " + std::to_string(r.vertices) +
-                   " vertices, seam gap " + num(r.seam_gap_max_mm, 1) + " mm)");
-    // the series, thinned to at most 400 points (mean of each bucket)
-    std::vector<double> x, y;
-    const std::size_t bucket = std::max<std::size_t>(1, ms.size() / 400);
-    for (std::size_t k = 0; k + bucket <= ms.size(); k += bucket) {
-      double sum = 0;
-      for (std::size_t j = 0; j < bucket; ++j) sum += ms[k + j];
-      x.push_back(double(k + bucket / 2));
-      y.push_back(sum / double(bucket));
-    }
-    series.push_back({{"label", std::string(g.product) + " " + std::to_string(r.vertices) + " v, " + collider},
-                      {"x", x},
-                      {"y", y},
-                      {"style", "-"}});
+// the mean time of the first and of the last tenth of the sewing iterations [ms]
+std::pair<double, double> first_and_last_tenth(const std::vector<float>& ms) {
+  const std::size_t tenth = std::max<std::size_t>(1, ms.size() / 10);
+  double first = 0, last = 0;
+  for (std::size_t k = 0; k < tenth && k < ms.size(); ++k) {
+    first += ms[k] / double(tenth);
+    last += ms[ms.size() - 1 - k] / double(tenth);
   }
-  ctx.chart("durupinar-f6", {{"title", "Sewing: time per iteration (attraction seams, Durupinar Eq. 1)"},
-                             {"xlabel", "iteration"},
-                             {"ylabel", "ms per iteration"},
-                             {"series", series}});
+  return {first, last};
+}
+
+// a chart series of the time per iteration, thinned to at most 400 points (the mean of each bucket)
+nlohmann::json thinned_series(const std::vector<float>& ms, const std::string& label) {
+  std::vector<double> x, y;
+  const std::size_t bucket = std::max<std::size_t>(1, ms.size() / 400);
+  for (std::size_t k = 0; k + bucket <= ms.size(); k += bucket) {
+    double sum = 0;
+    for (std::size_t j = 0; j < bucket; ++j) sum += ms[k + j];
+    x.push_back(double(k + bucket / 2));
+    y.push_back(sum / double(bucket));
+  }
+  return {{"label", label}, {"x", x}, {"y", y}, {"style", "-"}};
+}
+
+// the page's opening lines: the paper's sewing times, ours per garment and collider, the verdict
+std::vector<std::string> summary_lines(const std::vector<std::string>& ours) {
   const auto& pf = paper::kDurupinarF6;
   std::vector<std::string> summary{"The paper (Fig. 6): the skirt (" + std::to_string(pf[0].vertices) + " vertices, " +
                                    std::to_string(pf[0].seams) + " seams) sewn in " + num(pf[0].total_sewing_s, 3) +
@@ -78,6 +48,49 @@ void durupinar_f6(ExperimentContext& ctx) {
       "Verdict: the sewing times are set beside the paper's on another machine and clock (her dt is 0.05 s, "
       "ours the Eq. 4 bound); the seam counts follow her meshing, and every row's seam gap is its own "
       "check of the sewing.");
+  return summary;
+}
+
+void durupinar_f6(ExperimentContext& ctx) {
+  struct G {
+    const char* product;
+    const char* scene;
+    int vertices;
+  };
+  const G garments[] = {{"skirt", "durupinar/skirt.toml", 1400}, {"trousers", "durupinar/trousers.toml", 2774}};
+  MarkdownTable t({"garment", "collider", "vertices", "seam pairs", "sew iterations", "sewing time [s]",
+                   "ms/iteration first 10 %", "ms/iteration last 10 %", "sewn", "seam gap [mm]", "paper vertices",
+                   "paper seams", "paper sewing time [s]"});
+  nlohmann::json series = nlohmann::json::array();
+  std::vector<std::string> ours;  // per garment and collider: its total sewing time, for the summary
+  RunOptions trace;
+  trace.trace = true;
+  // image space (ours) and an exact object-space collider (Durupinar used an AABB tree; embree stands for it)
+  for (std::size_t i = 0; i < 2; ++i)
+    for (const auto& collider : ctx.colliders({"is-cpu", "embree"})) {
+      const auto& g = garments[i];
+      std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices), "stop.drape_max_s=0"};
+      if (ctx.quick()) sets.push_back("stop.max_iterations=60");
+      const RunResult& r = ctx.run(g.scene, collider, sets, trace);
+      const auto [first, last] = first_and_last_tenth(r.sew_iteration_ms);
+      const auto& p = paper::kDurupinarF6[i];
+      t.row({g.product, r.collider, std::to_string(r.vertices), std::to_string(r.mesh.seam_pairs.cols()),
+             std::to_string(r.sew.iterations), num(r.sew.wall_ms / 1e3, 3), num(first, 3), num(last, 3),
+             r.sew.reached ? "yes" : "no", num(r.seam_gap_max_mm, 1), std::to_string(p.vertices),
+             std::to_string(p.seams), num(p.total_sewing_s, 3)});
+      ctx.add_run(r, std::string("durupinar-f6/") + g.product + "/" + r.collider);
+      ours.push_back(std::string(g.product) + " " + collider + " " +
+                     (r.sew.reached ? "sewn in " + num(r.sew.wall_ms / 1e3, 2) + " s"
+                                    : "not sewn in " + num(r.sew.wall_ms / 1e3, 2) + " s") +
+                     " (" + std::to_string(r.mesh.seam_pairs.cols()) + " seam pairs, " + std::to_string(r.vertices) +
+                     " vertices, seam gap " + num(r.seam_gap_max_mm, 1) + " mm)");
+      series.push_back(thinned_series(r.sew_iteration_ms,
+                                      std::string(g.product) + " " + std::to_string(r.vertices) + " v, " + collider));
+    }
+  ctx.chart("durupinar-f6", {{"title", "Sewing: time per iteration (attraction seams, Durupinar Eq. 1)"},
+                             {"xlabel", "iteration"},
+                             {"ylabel", "ms per iteration"},
+                             {"series", series}});
   MarkdownTable fps({"animation sequence (Durupinar section 5)", "paper frames/s"});
   for (const auto& f : paper::kDurupinarFps) fps.row({f.sequence, num(f.fps, 3)});
   ctx.write("durupinar-f6", "Durupinar Fig. 6: sewing times",
@@ -93,7 +106,7 @@ void durupinar_f6(ExperimentContext& ctx) {
                 "Her frame rates (the paper's figures; no garment of ours matches her outfits, the nearest measured "
                 "here are walking-t2's frames/s):\n\n" +
                 fps.str(),
-            summary);
+            summary_lines(ours));
 }
 
 }  // namespace

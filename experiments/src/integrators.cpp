@@ -23,8 +23,8 @@ struct Garment {
 struct Solver {
   const char* integrator;
   const char* regime;
-  bool papers_limit = false;  // the papers' regime's velocity modification on the regime's springs
-  int limit_passes = 0;       // the regime's passes of its limit unless set
+  bool papers_limit = false;   // the papers' regime's velocity modification on the regime's springs
+  int limit_passes = 0;        // the regime's passes of its limit unless set
   const char* skin = nullptr;  // body.skin_mm, when set
 };
 
@@ -57,8 +57,8 @@ std::string outcome(const RunResult& r) {
     return "diverged at iteration " + std::to_string(r.divergence->iteration) + " (" + to_string(r.divergence->phase) +
            ", vertex " + std::to_string(r.divergence->vertex) + ": " + r.divergence->reason + ")";
   return std::to_string(r.sew.iterations) + " + " + std::to_string(r.drape.iterations) + " iterations, " +
-         (r.sew.reached ? "sewn" : "not sewn") + ", " + (r.drape.reached ? "settled" : "not settled") + "; strain max " + num(100 * r.strain_max, 1) +
-         " %; " + limits_cell(r);
+         (r.sew.reached ? "sewn" : "not sewn") + ", " + (r.drape.reached ? "settled" : "not settled") +
+         "; strain max " + num(100 * r.strain_max, 1) + " %; " + limits_cell(r);
 }
 
 // where explicit Euler stops: the papers' regime's springs (as soft as Eq. 4 and Gershgorin need at 5 ms)
@@ -90,7 +90,8 @@ std::string step_sweep(ExperimentContext& ctx, const Garment& g, const std::vect
   return "### Where explicit Euler diverges (" + std::string(g.product) + ", " + std::to_string(papers.vertices) +
          " vertices, " + collider +
          ")\n\nThe papers' regime's springs are made for 5 ms (equal point masses, as soft as Eq. 4 and Gershgorin "
-         "need at dt / 0.9); here they are kept while dt grows, with `allow_unstable_dt` (Eq. 4 would refuse the larger "
+         "need at dt / 0.9); here they are kept while dt grows, with `allow_unstable_dt` (Eq. 4 would refuse the "
+         "larger "
          "steps). Implicit Euler runs the stable regime's 60/20/10 N/m springs (its point masses equal too) at the "
          "same steps. Bounds are those of the explicit row's springs and masses.\n\n" +
          t.str();
@@ -168,6 +169,87 @@ std::vector<std::string> summary(const std::vector<Garment>& garments, const std
   return lines;
 }
 
+// the table's columns: what ran, then its outcome
+MarkdownTable integrators_table() {
+  return MarkdownTable({"garment",
+                        "integrator",
+                        "regime",
+                        "collider",
+                        "vertices",
+                        "dt [ms]",
+                        "iterations (sew + drape)",
+                        "paper iterations (IS)",
+                        "ours/paper (sew; all)",
+                        "sewn",
+                        "settled",
+                        "wall to dressed [s] (set-up incl.)",
+                        "ms/iteration (CD&R + CS; of CS the limits)",
+                        "inside [%]",
+                        "depth max [mm]",
+                        "crossings [%]",
+                        "seam gap [mm]",
+                        "strain max / p99 [%]",
+                        "springs over the strain limit [%]",
+                        "largest strain at",
+                        "meets the limits"});
+}
+
+// one row of the table: what ran, then its outcome (a diverged run has no accuracy)
+std::vector<std::string> row_cells(const Garment& g, const Solver& s, const std::string& collider, const RunResult& r,
+                                   double wall_s) {
+  const long its = r.sew.iterations + r.drape.iterations;
+  std::vector<std::string> cells{
+      g.product, s.integrator, regime_label(s), collider, std::to_string(r.vertices), num(1e3 * r.dt_s, 3)};
+  const auto add = [&](std::initializer_list<std::string> more) { cells.insert(cells.end(), more); };
+  if (r.divergence) {
+    add({"diverged at " + std::to_string(r.divergence->iteration), std::to_string(g.paper_iterations), "-", "-", "-",
+         num(wall_s, 3), num(r.ms_per_iteration(), 3)});
+    cells.resize(cells.size() + 7, "-");  // inside, depth, crossings, seam gap, strain, over, where
+    add({"no: diverged"});
+    return cells;
+  }
+  add({std::to_string(r.sew.iterations) + " + " + std::to_string(r.drape.iterations),
+       std::to_string(g.paper_iterations),
+       num(double(r.sew.iterations) / g.paper_iterations, 1) + "; " + num(double(its) / g.paper_iterations, 1),
+       r.sew.reached ? "yes" : "no", r.drape.reached ? "yes" : "no", num(wall_s, 3),
+       num(r.ms_per_iteration(), 3) + " (" + num(r.cdr_ms_per_iteration(), 3) + " + " +
+           num(r.cs_ms_per_iteration(), 3) + "; " + num(r.limit_ms_per_iteration(), 3) + ")",
+       num(r.accuracy.inside_pct, 2), num(r.accuracy.depth_max_mm, 1), num(r.accuracy.crossings_pct, 2),
+       num(r.seam_gap_max_mm, 1), num(100 * r.strain_max, 1) + " / " + num(100 * r.strain_p99, 1),
+       num(100 * r.strain_over, 2), r.strain_max_where, limits_cell(r)});
+  return cells;
+}
+
+// the page's text above the table
+std::string description() {
+  return "Each garment sewn and draped on the static body (scenes/dressing/*.toml, their other settings as "
+         "committed: limit threshold 10 %, the skirt with face queries) at the papers' sizes, with each "
+         "integrator (`solver.integrator`) in the stable regime (automatic dt: explicit Euler and rk45 at 0.9 x "
+         "min(Eq. 4, Gershgorin) over the actual point masses, implicit Euler 10 ms with the papers' limit settings: "
+         "directional, 32 passes, again after the response; the projective solve, Liu et al. 2013 beyond the papers, "
+         "5 ms, 2 local/global iterations, the body answered 1 mm thicker, `body.skin_mm`: at steps of milliseconds a "
+         "step slides resting cloth a fraction of a millimetre into a curved surface) and explicit Euler in the "
+         "papers' regime (`solver.regime = \"papers\"`: equal point masses, dt 5 ms, springs as soft as Eq. 4 "
+         "and Gershgorin need at that dt, the stretch held by the directional velocity limit, 32 passes). The "
+         "stable regime's limit is `impulses` (walking Eq. 5 as accumulated impulses warm-started from the last step, "
+         "after "
+         "Catto 2005), 1 pass, run again after the collision response. "
+         "Wall time is one thread, collider set-up "
+         "included, until sewn and "
+         "settled or the phase budgets (1 s + 2 s simulated) run out. The papers' iteration counts are their "
+         "image-space rows (dressing Table 1 for shirt and dress, Table 2 for the skirt at 336 vertices and the "
+         "trousers at 560, here 600, which does not state dt); Table 1's are counts \"to sew a shirt and a dress\" "
+         "(dressing section 7), so ours/paper gives the sewing phase's ratio first and the whole run's (sew and drape "
+         "to settled) second. A row \"4 limit passes\" runs the papers' regime with four limit passes instead of 32: "
+         "the strain left when the limit's Gauss-Seidel sweep is not given the passes to converge, and what the "
+         "passes cost. The table gives each integrator's wall time to dressed as ms/iteration times iterations (CD&R = "
+         "collider query and response, CS = forces, integration, limits and "
+         "seaming, and of CS the velocity limits' passes alone). \"Largest strain at\" names the most stretched "
+         "structural spring at the end: how high it is, "
+         "and how many of its ends the body holds (in contact) or a seam joins, the measured reason a row misses "
+         "the strain limit.\n\n";
+}
+
 void integrators(ExperimentContext& ctx) {
   const std::vector<Garment> garments = {{"shirt", "dressing/shirt.toml", 1800, paper::kDressingT1[0].iterations},
                                          {"dress", "dressing/dress.toml", 3840, paper::kDressingT1[2].iterations},
@@ -178,27 +260,7 @@ void integrators(ExperimentContext& ctx) {
   const Solver solvers[] = {
       {"explicit-euler", "stable"},       {"explicit-euler", "papers"}, {"explicit-euler", "papers", false, 4},
       {"implicit-euler", "stable", true}, {"rk45", "stable"},           {"projective", "stable", false, 0, "1"}};
-  MarkdownTable t({"garment",
-                   "integrator",
-                   "regime",
-                   "collider",
-                   "vertices",
-                   "dt [ms]",
-                   "iterations (sew + drape)",
-                   "paper iterations (IS)",
-                   "ours/paper (sew; all)",
-                   "sewn",
-                   "settled",
-                   "wall to dressed [s] (set-up incl.)",
-                   "ms/iteration (CD&R + CS; of CS the limits)",
-                   "inside [%]",
-                   "depth max [mm]",
-                   "crossings [%]",
-                   "seam gap [mm]",
-                   "strain max / p99 [%]",
-                   "springs over the strain limit [%]",
-                   "largest strain at",
-                   "meets the limits"});
+  MarkdownTable t = integrators_table();
   nlohmann::json series = nlohmann::json::array();
   std::vector<Quickest> quickest(garments.size());
   for (const Solver& s : solvers)
@@ -210,31 +272,10 @@ void integrators(ExperimentContext& ctx) {
         const RunResult& r = ctx.run(g.scene, collider, overrides(ctx, g, s));
         const std::string label = std::string(s.integrator) + " / " + regime_label(s) + " / " + collider;
         ctx.add_run(r, "integrators/" + std::string(g.product) + "/" + label);
-        const long its = r.sew.iterations + r.drape.iterations;
         const double wall_s = r.setup_ms / 1e3 + r.total_s();
         quickest[gi].offer(label, wall_s, r);
-        // the row's lead: what ran; then its outcome (a diverged run has no accuracy)
-        std::vector<std::string> cells{
-            g.product, s.integrator, regime_label(s), collider, std::to_string(r.vertices), num(1e3 * r.dt_s, 3)};
-        const auto add = [&](std::initializer_list<std::string> more) { cells.insert(cells.end(), more); };
-        if (r.divergence) {
-          add({"diverged at " + std::to_string(r.divergence->iteration), std::to_string(g.paper_iterations), "-", "-",
-               "-", num(wall_s, 3), num(r.ms_per_iteration(), 3)});
-          cells.resize(cells.size() + 7, "-");  // inside, depth, crossings, seam gap, strain, over, where
-          add({"no: diverged"});
-          t.row(cells);
-          continue;
-        }
-        add({std::to_string(r.sew.iterations) + " + " + std::to_string(r.drape.iterations),
-             std::to_string(g.paper_iterations),
-             num(double(r.sew.iterations) / g.paper_iterations, 1) + "; " + num(double(its) / g.paper_iterations, 1),
-             r.sew.reached ? "yes" : "no", r.drape.reached ? "yes" : "no", num(wall_s, 3),
-             num(r.ms_per_iteration(), 3) + " (" + num(r.cdr_ms_per_iteration(), 3) + " + " +
-                 num(r.cs_ms_per_iteration(), 3) + "; " + num(r.limit_ms_per_iteration(), 3) + ")",
-             num(r.accuracy.inside_pct, 2), num(r.accuracy.depth_max_mm, 1), num(r.accuracy.crossings_pct, 2),
-             num(r.seam_gap_max_mm, 1), num(100 * r.strain_max, 1) + " / " + num(100 * r.strain_p99, 1),
-             num(100 * r.strain_over, 2), r.strain_max_where, limits_cell(r)});
-        t.row(cells);
+        t.row(row_cells(g, s, collider, r, wall_s));
+        if (r.divergence) continue;
         x.push_back(wall_s);
         y.push_back(100 * r.strain_p99);
       }
@@ -250,35 +291,8 @@ void integrators(ExperimentContext& ctx) {
                             {"ylabel", "strain p99 at the end [%]"},
                             {"logx", true},
                             {"series", series}});
-  ctx.write(
-      "integrators", "Integrators and the papers' clock",
-      "Each garment sewn and draped on the static body (scenes/dressing/*.toml, their other settings as "
-      "committed: limit threshold 10 %, the skirt with face queries) at the papers' sizes, with each "
-      "integrator (`solver.integrator`) in the stable regime (automatic dt: explicit Euler and rk45 at 0.9 x "
-      "min(Eq. 4, Gershgorin) over the actual point masses, implicit Euler 10 ms with the papers' limit settings: "
-      "directional, 32 passes, again after the response; the projective solve, Liu et al. 2013 beyond the papers, "
-      "5 ms, 2 local/global iterations, the body answered 1 mm thicker, `body.skin_mm`: at steps of milliseconds a "
-      "step slides resting cloth a fraction of a millimetre into a curved surface) and explicit Euler in the "
-      "papers' regime (`solver.regime = \"papers\"`: equal point masses, dt 5 ms, springs as soft as Eq. 4 "
-      "and Gershgorin need at that dt, the stretch held by the directional velocity limit, 32 passes). The "
-      "stable regime's limit is `impulses` (walking Eq. 5 as accumulated impulses warm-started from the last step, after "
-      "Catto 2005), 1 pass, run again after the collision response. "
-      "Wall time is one thread, collider set-up "
-      "included, until sewn and "
-      "settled or the phase budgets (1 s + 2 s simulated) run out. The papers' iteration counts are their "
-      "image-space rows (dressing Table 1 for shirt and dress, Table 2 for the skirt at 336 vertices and the "
-      "trousers at 560, here 600, which does not state dt); Table 1's are counts \"to sew a shirt and a dress\" "
-      "(dressing section 7), so ours/paper gives the sewing phase's ratio first and the whole run's (sew and drape "
-      "to settled) second. A row \"4 limit passes\" runs the papers' regime with four limit passes instead of 32: "
-      "the strain left when the limit's Gauss-Seidel sweep is not given the passes to converge, and what the "
-      "passes cost. The table gives each integrator's wall time to dressed as ms/iteration times iterations (CD&R = "
-      "collider query and response, CS = forces, integration, limits and "
-      "seaming, and of CS the velocity limits' passes alone). \"Largest strain at\" names the most stretched "
-      "structural spring at the end: how high it is, "
-      "and how many of its ends the body holds (in contact) or a seam joins, the measured reason a row misses "
-      "the strain limit.\n\n" +
-          t.str() + "\n![chart](integrators.png)\n\n" + sweep,
-      summary(garments, quickest));
+  ctx.write("integrators", "Integrators and the papers' clock",
+            description() + t.str() + "\n![chart](integrators.png)\n\n" + sweep, summary(garments, quickest));
 }
 
 }  // namespace

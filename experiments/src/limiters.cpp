@@ -212,10 +212,11 @@ std::vector<std::string> summary(const std::vector<Measured>& rows, std::size_t 
   return lines;
 }
 
-void limiters(ExperimentContext& ctx) {
-  // the papers' clock: every method at 1, 4 and 32 passes on the shirt, the main ones at 4 and 32 (the projection
-  // at 4, 8 and 16) on the other garments; the stable regime: its one pass and eight; the second clip: the fullest
-  // settings only; in the stable regime Eq. 5 again after the response too (its default: impulses, 1 pass)
+// the garments and bodies, each with its settings. The papers' clock: every method at 1, 4 and 32 passes on the
+// shirt, the main ones at 4 and 32 (the projection at 4, 8 and 16) on the other garments; the stable regime: its one
+// pass and eight; the second clip: the fullest settings only; in the stable regime Eq. 5 again after the response
+// too (its default: impulses, 1 pass)
+std::vector<std::pair<Case, std::vector<Setting>>> limiter_cases() {
   std::vector<Setting> papers_all, papers_main, stable;
   for (const char* limit : kLimits)
     for (int passes : {1, 4, 32}) papers_all.push_back({"papers", limit, passes});
@@ -238,30 +239,78 @@ void limiters(ExperimentContext& ctx) {
   };
   // walking: Eq. 5's sweeps after the response at 8 and 16 passes (the walking skirt's setting), and the regime's
   // warm-started impulses at one, two and three (the walking dress's)
-  const std::vector<Setting> walking_after{{"stable", "velocity", 8, true}, {"stable", "velocity", 16, true},
-                                           {"stable", "impulses", 1, true}, {"stable", "impulses", 2, true},
+  const std::vector<Setting> walking_after{{"stable", "velocity", 8, true},
+                                           {"stable", "velocity", 16, true},
+                                           {"stable", "impulses", 1, true},
+                                           {"stable", "impulses", 2, true},
                                            {"stable", "impulses", 3, true}};
   const std::vector<Setting> second_clip = join({{"papers", "velocity", 32},
                                                  {"papers", "tethers", 32},
                                                  {"papers", "projection", 8},
                                                  {"stable", "directional", 8}},
                                                 walking_after);
-  const std::vector<std::pair<Case, std::vector<Setting>>> cases = {
-      {{"shirt", "dressing/shirt.toml", 1800, ""}, join(papers_all, stable)},
-      {{"dress", "dressing/dress.toml", 2300, ""}, join(papers_main, stable)},
-      {{"skirt", "walking/skirt.toml", 672, "walk_07_01"},
-       join(join(papers_main, stable), {{"stable", "velocity", 16, true}})},
-      {{"dress with sleeves", "walking/dress_sleeves.toml", 2300, "walk_07_01"},
-       join(join(papers_main, {{"stable", "directional", 1}, {"stable", "directional", 8}}), walking_after)},
-      {{"skirt", "walking/skirt.toml", 672, "walk_08_02"}, second_clip},
-      {{"dress with sleeves", "walking/dress_sleeves.toml", 2300, "walk_08_02"}, second_clip}};
+  return {{{"shirt", "dressing/shirt.toml", 1800, ""}, join(papers_all, stable)},
+          {{"dress", "dressing/dress.toml", 2300, ""}, join(papers_main, stable)},
+          {{"skirt", "walking/skirt.toml", 672, "walk_07_01"},
+           join(join(papers_main, stable), {{"stable", "velocity", 16, true}})},
+          {{"dress with sleeves", "walking/dress_sleeves.toml", 2300, "walk_07_01"},
+           join(join(papers_main, {{"stable", "directional", 1}, {"stable", "directional", 8}}), walking_after)},
+          {{"skirt", "walking/skirt.toml", 672, "walk_08_02"}, second_clip},
+          {{"dress with sleeves", "walking/dress_sleeves.toml", 2300, "walk_08_02"}, second_clip}};
+}
+
+// the chart: strain against the limiter's cost, one series per limiter at the papers' clock
+nlohmann::json chart_series(const std::vector<Measured>& rows) {
+  nlohmann::json series = nlohmann::json::array();
+  for (const char* limit : kLimits) {
+    std::vector<double> x, y;
+    for (const Measured& m : rows)
+      if (m.ok && std::string(m.s.limit) == limit && std::string(m.s.regime) == "papers")
+        x.push_back(std::max(m.limit_ms, 1e-4)), y.push_back(std::max(m.strain_pct, 1e-2));
+    if (!x.empty()) series.push_back({{"label", limit}, {"x", x}, {"y", y}, {"style", "o"}});
+  }
+  return series;
+}
+
+// the page's text above the table
+std::string description(const std::string& collider, const std::vector<Measured>& rows) {
+  return "Every strain limiter of `solver.limit` (scenes/README.md; dressing section 4, walking section 3, and four "
+         "methods beyond the papers: `tethers`, long-range attachments after Kim, Chentanez and Mueller 2012, "
+         "`follow`, follow the leader after Mueller, Kim and Chentanez 2012, `projection`, fast projection of the "
+         "structural springs after Goldenthal et al. 2007, its passes Newton iterations, and `impulses`, walking Eq. 5 "
+         "on the structural springs as accumulated impulses warm-started from the last step, the body's contacts in "
+         "the same solve, after Catto 2005) at a few pass counts "
+         "(`solver.limit_passes`, the most per call), with " +
+         collider +
+         ": the shirt and the dress sewn and draped on the static body, and the skirt and the dress with sleeves "
+         "dressed and walking in place for two seconds on both clips (scenes/walking/*.toml), at the papers' clock "
+         "(`solver.regime = papers`: dt 5 ms, equal point masses, springs as soft as that dt allows, so that the "
+         "limiter alone holds the stretch; the limit runs again after the response) and in our stable regime (its "
+         "stiff springs at the automatic dt; the limit once per step unless the row says it runs again after the "
+         "collision response, `solver.limit_after_response`, as the walking scenes set it). Strain is the largest "
+         "structural strain at the end (static) or at any "
+         "frame (walking; p99 the worst frame's 99th percentile); inside, depth and crossings the end state's or the "
+         "worst frame's; the limiter's ms a step and its share of the step (CD&R + CS, walk_*: the cloth's steps, "
+         "not the frame's skinning and maps); frames/s is the whole animation phase's wall time (skinning, maps, "
+         "cloth) on one thread. A row meets the limits when it meets every one of them (every frame when walking), "
+         "strain at most threshold + 1 % included.\n\nThe cheapest setting measured that meets every limit, per "
+         "garment and body:\n\n" +
+         cheapest(rows) +
+         "\nThe walking paper's advice (section 3.2: Eq. 5, `velocity`, on a static body, Eq. 6, `directional`, on "
+         "a moving one) beside this run, at the papers' clock with 32 passes (the regime's default is `directional` "
+         "on both bodies; walking-t2's rows at that clock run `velocity`; the stable regime's default is `impulses`, 1 "
+         "pass, again after the response, the walking dress's 3 passes, the walking skirt's `velocity`, 16):\n\n" +
+         advice(rows) + "\n";
+}
+
+void limiters(ExperimentContext& ctx) {
+  const auto cases = limiter_cases();
   const std::string collider = ctx.colliders({"is-cpu"}).front();  // the limiters are compared, on one collider
   MarkdownTable t({"garment", "body", "regime", "limiter", "passes", "vertices", "strain max / p99 [%]",
                    "springs over the strain limit [%] (end)", "inside [%] / depth [mm] / crossings [%]",
                    "limiter ms/step", "limiter share of the step [%]", "ms/step (CD&R + CS)",
                    "frames/s (walking) or wall to dressed [s]", "iterations", "meets the limits"});
   std::vector<Measured> rows;
-  nlohmann::json series = nlohmann::json::array();
   for (const auto& [c, settings] : cases) {
     // --quick: the code paths once (the second clip adds none, as in walking-t2)
     if (ctx.quick() && std::string(c.clip) == "walk_08_02") continue;
@@ -276,50 +325,14 @@ void limiters(ExperimentContext& ctx) {
       rows.push_back(m);
     }
   }
-  // the chart: strain against the limiter's cost, one series per limiter at the papers' clock
-  for (const char* limit : kLimits) {
-    std::vector<double> x, y;
-    for (const Measured& m : rows)
-      if (m.ok && std::string(m.s.limit) == limit && std::string(m.s.regime) == "papers")
-        x.push_back(std::max(m.limit_ms, 1e-4)), y.push_back(std::max(m.strain_pct, 1e-2));
-    if (!x.empty()) series.push_back({{"label", limit}, {"x", x}, {"y", y}, {"style", "o"}});
-  }
   ctx.chart("limiters", {{"title", "Strain limiters at the papers' clock: worst strain against the limiter's cost"},
                          {"xlabel", "the limiter's ms per step"},
                          {"ylabel", "largest structural strain (worst frame when walking) [%]"},
                          {"logx", true},
                          {"logy", true},
-                         {"series", series}});
-  ctx.write(
-      "limiters", "Strain limiters against each other",
-      "Every strain limiter of `solver.limit` (scenes/README.md; dressing section 4, walking section 3, and four "
-      "methods beyond the papers: `tethers`, long-range attachments after Kim, Chentanez and Mueller 2012, "
-      "`follow`, follow the leader after Mueller, Kim and Chentanez 2012, `projection`, fast projection of the "
-      "structural springs after Goldenthal et al. 2007, its passes Newton iterations, and `impulses`, walking Eq. 5 "
-      "on the structural springs as accumulated impulses warm-started from the last step, the body's contacts in "
-      "the same solve, after Catto 2005) at a few pass counts "
-      "(`solver.limit_passes`, the most per call), with " +
-          collider +
-          ": the shirt and the dress sewn and draped on the static body, and the skirt and the dress with sleeves "
-          "dressed and walking in place for two seconds on both clips (scenes/walking/*.toml), at the papers' clock "
-          "(`solver.regime = papers`: dt 5 ms, equal point masses, springs as soft as that dt allows, so that the "
-          "limiter alone holds the stretch; the limit runs again after the response) and in our stable regime (its "
-          "stiff springs at the automatic dt; the limit once per step unless the row says it runs again after the "
-          "collision response, `solver.limit_after_response`, as the walking scenes set it). Strain is the largest "
-          "structural strain at the end (static) or at any "
-          "frame (walking; p99 the worst frame's 99th percentile); inside, depth and crossings the end state's or the "
-          "worst frame's; the limiter's ms a step and its share of the step (CD&R + CS, walk_*: the cloth's steps, "
-          "not the frame's skinning and maps); frames/s is the whole animation phase's wall time (skinning, maps, "
-          "cloth) on one thread. A row meets the limits when it meets every one of them (every frame when walking), "
-          "strain at most threshold + 1 % included.\n\nThe cheapest setting measured that meets every limit, per "
-          "garment and body:\n\n" +
-          cheapest(rows) +
-          "\nThe walking paper's advice (section 3.2: Eq. 5, `velocity`, on a static body, Eq. 6, `directional`, on "
-          "a moving one) beside this run, at the papers' clock with 32 passes (the regime's default is `directional` "
-          "on both bodies; walking-t2's rows at that clock run `velocity`; the stable regime's default is `impulses`, 1 "
-          "pass, again after the response, the walking dress's 3 passes, the walking skirt's `velocity`, 16):\n\n" +
-          advice(rows) + "\n" + t.str() + "\n![chart](limiters.png)\n",
-      summary(rows, cases.size()));
+                         {"series", chart_series(rows)}});
+  ctx.write("limiters", "Strain limiters against each other",
+            description(collider, rows) + t.str() + "\n![chart](limiters.png)\n", summary(rows, cases.size()));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "clothbench/config.h"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
+#include "clothbench/experiments/row_names.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/render/picture.hpp"
 #include "experiment_list.hpp"
@@ -104,6 +105,51 @@ std::string motion_text(const std::vector<Motion>& runs) {
          "touches the sphere at the end of the motion are: " + following(runs) + ".";
 }
 
+// one limit's row: its strain, lag, contact and status (a diverged run has no end state)
+std::vector<std::string> row_cells(const char* label, const RunResult& r, const std::vector<double>& touching) {
+  const std::string status = r.divergence ? "diverged at iteration " + std::to_string(r.divergence->iteration) + " (" +
+                                                to_string(r.divergence->phase) + ", " + r.divergence->reason + ")"
+                                          : "ok";
+  const auto end_value = [&](double v) { return r.divergence ? std::string("-") : num(100 * v, 1); };
+  return {label,
+          "5 %",
+          r.frames ? num(100 * r.animate_strain_max, 1) : "-",
+          end_value(r.strain_max),
+          end_value(r.strain_p99),
+          r.divergence ? "-" : num(lag_cm(r.mesh.positions, r.final_body), 1),
+          r.divergence || touching.empty() ? "-" : num(touching.back(), 1),
+          r.divergence ? "-" : num(r.accuracy.inside_pct, 2),
+          status};
+}
+
+// the two charts against time; the page's links to those written
+std::string write_charts(ExperimentContext& ctx, const nlohmann::json& lag_series, const nlohmann::json& touch_series) {
+  std::string charts;
+  if (ctx.chart("walking-f8-lag", {{"title", "walking-f8: the cloth's centroid behind the sphere's centre along x"},
+                                   {"xlabel", "time of the motion [s]"},
+                                   {"ylabel", "lag [cm]"},
+                                   {"series", lag_series}}))
+    charts += "![lag against time](walking-f8-lag.png) ";
+  if (ctx.chart("walking-f8-touching", {{"title", "walking-f8: cloth vertices within tol of the sphere"},
+                                        {"xlabel", "time of the motion [s]"},
+                                        {"ylabel", "touching [%]"},
+                                        {"series", touch_series}}))
+    charts += "![touching against time](walking-f8-touching.png)";
+  return charts;
+}
+
+// the page's text above the table
+const char* const kDescription =
+    "A square tablecloth draped on a sphere that then moves along +x at 1 m/s for 1 s "
+    "(scenes/walking/tablecloth_sphere.toml; analytic sphere collider, so the comparison isolates the "
+    "super-elasticity limit). Limits: none; velocity averaging (walking Eq. 5); the directional modification as "
+    "the paper states it (walking Eq. 6: springs with |cos alpha| < 0.3 to v_dir average, on the others the rear "
+    "point takes the front one's velocity); and ours, which adds two rules (a held rear point, attached or in "
+    "contact, makes the front follow it; catching up that would add kinetic energy to the pair averages "
+    "instead). Lag = distance from the cloth's centroid to the sphere's centre along the motion; touching = "
+    "vertices within the collider's tol of the sphere. Both are charted at every frame of the motion; a cloth "
+    "that slides off the sphere shows as touching falling to 0 while the lag grows.\n\n";
+
 void walking_f8(ExperimentContext& ctx) {
   MarkdownTable t({"limit", "threshold", "strain max during motion [%]", "strain max end [%]", "strain p99 end [%]",
                    "lag behind the sphere [cm]", "touching the sphere [%] end", "inside [%] end", "status"});
@@ -130,18 +176,11 @@ void walking_f8(ExperimentContext& ctx) {
       touching.push_back(touching_pct(body, sim.positions(), tol));
     };
     const RunResult& r = ctx.run("walking/tablecloth_sphere.toml", "sphere", sets, options);
-    std::string status = r.divergence ? "diverged at iteration " + std::to_string(r.divergence->iteration) + " (" +
-                                            to_string(r.divergence->phase) + ", " + r.divergence->reason + ")"
-                                      : "ok";
-    const auto end_value = [&](double v) { return r.divergence ? std::string("-") : num(100 * v, 1); };
-    t.row({label, "5 %", r.frames ? num(100 * r.animate_strain_max, 1) : "-", end_value(r.strain_max),
-           end_value(r.strain_p99), r.divergence ? "-" : num(lag_cm(r.mesh.positions, r.final_body), 1),
-           r.divergence || touching.empty() ? "-" : num(touching.back(), 1),
-           r.divergence ? "-" : num(r.accuracy.inside_pct, 2), status});
+    t.row(row_cells(label, r, touching));
     nlohmann::json extra = nlohmann::json::object();
     if (r.frames) extra["animate_strain_max"] = r.animate_strain_max;
     if (!r.divergence) extra["lag_cm"] = lag_cm(r.mesh.positions, r.final_body);
-    ctx.add_run(r, std::string("walking-f8/tablecloth/") + limit, extra);
+    ctx.add_run(r, row_names::walking_f8(limit), extra);
     motions.push_back(motion(label, bool(r.divergence), times, touching, lags));
     strain_pct.push_back(100 * r.animate_strain_max);
     if (!times.empty()) {
@@ -151,32 +190,12 @@ void walking_f8(ExperimentContext& ctx) {
     if (!r.divergence) pictures.push_back(ctx.pictures().render(r.final_body, r.mesh, 300, View::kFront));
   }
   side_by_side(pictures).write_png(ctx.path("pictures/walking-f8.png"));
-  std::string charts;
-  if (ctx.chart("walking-f8-lag", {{"title", "walking-f8: the cloth's centroid behind the sphere's centre along x"},
-                                   {"xlabel", "time of the motion [s]"},
-                                   {"ylabel", "lag [cm]"},
-                                   {"series", lag_series}}))
-    charts += "![lag against time](walking-f8-lag.png) ";
-  if (ctx.chart("walking-f8-touching", {{"title", "walking-f8: cloth vertices within tol of the sphere"},
-                                        {"xlabel", "time of the motion [s]"},
-                                        {"ylabel", "touching [%]"},
-                                        {"series", touch_series}}))
-    charts += "![touching against time](walking-f8-touching.png)";
-  ctx.write(
-      "walking-f8", "Walking paper Fig. 8: tablecloth on a moving sphere",
-      "A square tablecloth draped on a sphere that then moves along +x at 1 m/s for 1 s "
-      "(scenes/walking/tablecloth_sphere.toml; analytic sphere collider, so the comparison isolates the "
-      "super-elasticity limit). Limits: none; velocity averaging (walking Eq. 5); the directional modification as "
-      "the paper states it (walking Eq. 6: springs with |cos alpha| < 0.3 to v_dir average, on the others the rear "
-      "point takes the front one's velocity); and ours, which adds two rules (a held rear point, attached or in "
-      "contact, makes the front follow it; catching up that would add kinetic energy to the pair averages "
-      "instead). Lag = distance from the cloth's centroid to the sphere's centre along the motion; touching = "
-      "vertices within the collider's tol of the sphere. Both are charted at every frame of the motion; a cloth "
-      "that slides off the sphere shows as touching falling to 0 while the lag grows.\n\n" +
-          t.str() + "\n" + charts + "\n\n" + motion_text(motions) + "\n\n![" +
-          "the rows that did not diverge, in order](pictures/walking-f8.png)\n\nPictures drawn by " +
-          ctx.pictures().name() + ".\n",
-      summary(motions, strain_pct));
+  const std::string charts = write_charts(ctx, lag_series, touch_series);
+  ctx.write("walking-f8", "Walking paper Fig. 8: tablecloth on a moving sphere",
+            kDescription + t.str() + "\n" + charts + "\n\n" + motion_text(motions) + "\n\n![" +
+                "the rows that did not diverge, in order](pictures/walking-f8.png)\n\nPictures drawn by " +
+                ctx.pictures().name() + ".\n",
+            summary(motions, strain_pct));
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "clothbench/render/picture.hpp"
 #include "experiment_list.hpp"
 #include "walking_t2_media.hpp"
+#include "walking_t2_speed.hpp"
 
 namespace clothbench {
 
@@ -230,24 +231,6 @@ std::string worst_mean(const RunResult& r, double FrameSample::*field, int digit
 // a garment is dressed when its seams were sewn before the measured walk starts
 bool dressed(const RunResult& r) { return r.window_seam_gap_mm <= kAccuracyLimits.seam_gap_mm; }
 
-// what a run misses of inside, depth and crossings at every frame, the seam gap, and strain `with_strain` ("a; b"),
-// empty when it meets them
-std::string accuracy_misses(const RunResult& r, bool with_strain = false) {
-  std::string misses;
-  for (const std::string& m : limit_misses(r, with_strain)) misses += (misses.empty() ? "" : "; ") + m;
-  return misses;
-}
-
-// a run's animation per frame: wall time [s] and its parts [ms] (skinning, maps/refit, cloth = CD&R + CS)
-struct FrameTimes {
-  double s, skinning_ms, maps_ms, cloth_ms;
-};
-FrameTimes frame_times(const RunResult& r) {
-  const double frames = double(std::max(1L, r.frames));
-  return {r.animate.wall_ms / 1e3 / frames, r.skinning_ms / frames, r.collider_update_ms / frames,
-          (r.animate.cdr_ms + r.animate.cs_ms) / frames};
-}
-
 // the row of one run: timings only for a dressed garment that did not diverge
 std::vector<std::string> walk_row(const std::string& product, const WalkVariant& v, const std::string& collider,
                                   const RunResult& r, const paper::WalkingT2Row& p) {
@@ -278,145 +261,6 @@ std::vector<std::string> walk_row(const std::string& product, const WalkVariant&
        num(100 * r.animate_strain_max, 1) + " / " + num(100 * r.frame_max(&FrameSample::strain_p99), 1),
        limits_cell(r)});
   return row;
-}
-
-// one of the dress's prepared-ahead runs at the papers' clock: how fast, and what it misses (empty: nothing)
-struct SpeedRun {
-  std::string variant, clip;
-  double fps;
-  std::string misses;
-  FrameTimes times;
-  double strain_pct;   // the largest strain at any frame [%]
-  bool strain_misses;  // over threshold + 1 % at some frame
-};
-
-// the fastest of the runs on walk_07_01 within inside, depth and crossings at every frame and the seam gap, and with
-// `strain` within its limit too (nullptr: none)
-const SpeedRun* fastest_within(const std::vector<SpeedRun>& runs, bool strain = false) {
-  const SpeedRun* best = nullptr;
-  for (const SpeedRun& s : runs)
-    if (s.clip == "walk_07_01" && s.misses.empty() && !(strain && s.strain_misses) && (!best || s.fps > best->fps))
-      best = &s;
-  return best;
-}
-
-// "\"label\" (12.3 frames/s, missing ...)"
-std::string speed_run_text(const SpeedRun& s) {
-  return "\"" + s.variant + "\" (" + num(s.fps, 1) + " frames/s, strain " + num(s.strain_pct, 0) + " %" +
-         (s.strain_misses ? " over its limit" : "") + (s.misses.empty() ? "" : ", missing " + s.misses) + ")";
-}
-
-// the fastest of those runs on walk_07_01 within inside, depth, crossings and the seam gap, those that pass 100
-// frames/s with what they miss, and the same settings on walk_08_02
-std::string speed_frontier(const std::vector<SpeedRun>& runs) {
-  const SpeedRun* best = fastest_within(runs);
-  std::string fast, other_clip;
-  for (const SpeedRun& s : runs) {
-    if (s.clip != "walk_07_01") {
-      other_clip += std::string(other_clip.empty() ? "" : "; ") + speed_run_text(s);
-    } else if (s.fps >= 100 && &s != best) {
-      fast += std::string(fast.empty() ? "" : "; ") + speed_run_text(s);
-    }
-  }
-  return " What the accuracy buys, from the dress's is-cpu rows on walk_07_01 in the stable regime (one thread, and "
-         "prepared ahead, and by the projective solve) and prepared ahead at the papers' clock (looser limit passes, "
-         "fewer surfaces and pixels, the colliders' body simplified, one limit pass with the papers' own image "
-         "space): " +
-         (best ? "the fastest within inside, depth and crossings at every frame and the seam gap is " +
-                     speed_run_text(*best)
-               : std::string("none stays within inside, depth and crossings at every frame and the seam gap")) +
-         "; " + (best && best->fps >= 100 ? "also " : "") +
-         "at 100 frames/s or more: " + (fast.empty() ? std::string("none") : fast) + "." +
-         (other_clip.empty() ? "" : " On walk_08_02: " + other_clip + ".");
-}
-
-// the same settings on the other clip, where they ran: a headline on one clip says how the other went
-std::string other_clip_text(const std::vector<SpeedRun>& frontier, const SpeedRun& s) {
-  for (const SpeedRun& o : frontier)
-    if (o.variant == s.variant && o.clip != s.clip)
-      return " On " + o.clip + " the same settings run at " + num(o.fps, 1) + " frames/s, " +
-             (o.misses.empty() && !o.strain_misses ? std::string("meeting every limit at every frame")
-                                                   : "missing the limits (strain " + num(o.strain_pct, 0) + " %" +
-                                                         (o.misses.empty() ? "" : ", " + o.misses) + ")") +
-             ".";
-  return " Not run on walk_08_02.";
-}
-
-// the page's opening lines: the paper's frame rates, our fastest row within every limit, the rows that meet them
-std::vector<std::string> summary(const std::vector<SpeedRun>& frontier,
-                                 const std::vector<std::pair<std::string, std::pair<int, int>>>& meeting,
-                                 const std::optional<SpeedRun>& fastest) {
-  const auto& p = paper::kWalkingT2;
-  std::vector<std::string> lines{"The paper (walking Table 2): the " + std::string(p[0].product) + " (" +
-                                 std::to_string(p[0].vertices) + " vertices) at " + num(p[0].fps, 1) +
-                                 " frames/s, the " + p[1].product + " (" + std::to_string(p[1].vertices) + ") at " +
-                                 num(p[1].fps, 1) + " frames/s, rendering on screen included."};
-  const SpeedRun* all = fastest_within(frontier, true);
-  lines.push_back(
-      all ? "Ours, the dress with sleeves, is-cpu, walk_07_01, one run: **" + num(all->fps, 1) +
-                " frames/s** meeting every limit at every frame, strain included (\"" + all->variant + "\")." +
-                other_clip_text(frontier, *all)
-          : std::string("Ours: no speed row of the dress with sleeves meets every limit at every frame, strain "
-                        "included (the Speed paragraph says what each misses)."));
-  // a row of another collider or variant that is faster within every limit is named beside the is-cpu headline
-  if (fastest && (!all || fastest->fps > all->fps))
-    lines.back() += " The fastest row of the dress within every limit on walk_07_01, any collider: \"" +
-                    fastest->variant + "\" at " + num(fastest->fps, 1) + " frames/s.";
-  std::string rows = "Rows that meet every limit at every frame, strain included:";
-  for (std::size_t i = 0; i < meeting.size(); ++i)
-    rows += std::string(i ? ";" : "") + " " + meeting[i].first + " " + std::to_string(meeting[i].second.first) +
-            " of " + std::to_string(meeting[i].second.second);
-  lines.push_back(rows + " (every collider, variant and clip below).");
-  if (all)
-    lines.push_back("Verdict: " + num(all->fps / p[1].fps, 1) + " times the paper's rate for the " + p[1].product +
-                    " within every limit on walk_07_01; the target of 100 frames/s within every limit on both clips " +
-                    (all->fps >= 100 && other_clip_text(frontier, *all).find("meeting every") != std::string::npos
-                         ? "is met."
-                         : "is not met yet."));
-  return lines;
-}
-
-// the benchmark figure (the dress with sleeves, is-cpu, at the papers' clock, prepared ahead) and what
-// bounds it on the machine that ran it: the body's side of a frame (skinning and maps, on the second thread)
-std::string speed_figure(const RunResult& r, const paper::WalkingT2Row& p, const std::vector<SpeedRun>& frontier) {
-  if (r.frames == 0 || r.divergence) return "";
-  const FrameTimes f = frame_times(r);
-  const double body_ms = f.skinning_ms + f.maps_ms;
-  const std::string misses = accuracy_misses(r, true);
-  // a headline only for a row that meets every limit at every frame, strain included
-  const SpeedRun* all = fastest_within(frontier, true);
-  const SpeedRun* best = fastest_within(frontier);
-  const auto settings = [](const SpeedRun& s) {
-    return "\"" + s.variant + "\": the cloth " + num(s.times.cloth_ms, 1) + " ms a frame, the body's side " +
-           num(s.times.skinning_ms + s.times.maps_ms, 1) + " ms; strain " + num(s.strain_pct, 0) + " %";
-  };
-  const auto other_clip = [&](const SpeedRun& s) { return other_clip_text(frontier, s); };
-  std::string lead = all ? "**" + num(all->fps, 1) +
-                               " frames/s** on walk_07_01 meeting every limit at every frame, strain included (" +
-                               settings(*all) + ")." + other_clip(*all) + " "
-                         : "no row here meets every limit at every frame, strain included, so none is a headline; ";
-  if (best && best != all)
-    lead += std::string(all ? "The" : "the") +
-            " fastest within inside, depth and crossings at every frame and the seam gap runs at " + num(best->fps, 1) +
-            " frames/s (" + settings(*best) + (best->strain_misses ? ", over its limit" : "") + "); ";
-  return "**Speed** (the dress with sleeves, " + std::to_string(r.vertices) +
-         " vertices, is-cpu, walk_07_01, skinning, maps and cloth, the papers' clock with walking Eq. 5's limit and "
-         "the next frame prepared on a second thread; " +
-         num(p.fps, 1) + " frames/s in the paper): " + lead +
-         "the tight settings (\"papers' clock, Eq. 5 limit, next " +
-         "frame prepared ahead\": passes to 0.05 mm, six views of five surfaces, the exact body) run at " +
-         num(1 / f.s, 1) + " frames/s, " +
-         (misses.empty() ? "meeting every limit at every frame" : "missing the limits: " + misses) +
-         ". There the cloth takes " + num(f.cloth_ms, 1) + " ms per frame (" + num(r.steps_per_frame, 0) +
-         " steps), the body's side " + num(body_ms, 1) + " ms (skinning " + num(f.skinning_ms, 1) +
-         ", maps of six views with five layers " + num(f.maps_ms, 1) +
-         "); a frame takes about the larger of the two. So on this machine no is-cpu run with these maps of the exact "
-         "body passes " +
-         num(1e3 / body_ms, 0) +
-         " frames/s even with the cloth free: 100 frames/s needs the body's side under 10 ms (the maps on a GPU, "
-         "results/gpu-h100, or fewer surfaces, pixels and triangles) and the cloth's steps, each with its limit "
-         "passes, under 10 ms a frame as well (looser passes)." +
-         speed_frontier(frontier) + "\n\n";
 }
 
 // the walk's garments, as the paper's Table 2 has them
@@ -543,43 +387,9 @@ void walk_garment(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, W
 }
 
 // the page's text before the table: what runs, how the body moves, what each ablation row changes
-std::string description(const WalkPage& page) {
-  return "Garments dressed on the bind pose (t = 0, sew + drape with `collider.dress_with`), carried through the "
-         "clip's "
-         "lead-in (0 - 1 s), then measured over **two seconds of walking** (1 - 3 s, about two gait cycles) in place, "
-         "on "
-         "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
-         "animation time and the cloth takes `steps/frame` steps of dt per frame, in our stable regime (its limit the "
-         "walking scenes': walking Eq. 5 as warm-started impulses, 3 passes, for the dress, Eq. 5's sweeps, 16 passes, for "
-         "the skirt, run again after the collision response; results/limiters.md "
-         "measures the alternatives, Eq. 6 and fewer passes among them) and at the papers' "
-         "clock (`solver.regime = papers`: dt 5 ms, equal point masses, soft springs, 32 limit passes; see "
-         "dressing-t1; "
-         "the passes here stop once they change no point by more than " +
-         std::string(kPapersTolerance) +
-         " mm, `solver.limit_tolerance_mm`) with the walking "
-         "paper's averaging limit (Eq. 5, `solver.limit = velocity`): with its directional limit (Eq. 6, the paper's "
-         "choice for moving bodies, and the regime's default) the dress with sleeves diverges at that clock within the "
-         "first frames of the walk (the ablation row: that limit's rear-catches-up rule does not keep momentum), "
-         "while Eq. 5's mass-weighted mean keeps it; the rows \"projection limit\" hold the strain by a fast "
-         "projection of "
-         "the structural springs instead (Goldenthal et al. 2007, beyond the papers; results/limiters.md); the rows "
-         "\"projective solve\" keep the stable regime's springs and masses and step them by backward Euler in "
-         "local/global iterations on a matrix factored once (Liu et al. 2013, beyond the papers; `solver.integrator = "
-         "projective`, 2 iterations) at 20 steps of 1.67 ms a frame instead of about 200 explicit ones. s/frame = wall "
-         "time of the animation phase "
-         "per frame: skinning (LBS, our analogue of the paper's reading the body file), map re-render, BVH refit or "
-         "(vdb) the body's signed distance field voxelised again, and cloth (CD&R + CS); vdb runs half a second in the "
-         "stable regime only, its per-frame voxelisation costing seconds. The paper's figures include rendering the "
-         "scene on screen, ours do not. The exact oracle measures **every frame** (outside s/frame): the worst and the "
-         "mean frame's inside and crossings, the worst frame's depth; the verdict counts the worst frame. A garment "
-         "whose "
-         "seams are still open when the walk starts (gap > 2 mm) gets no timings: it is listed as not dressed. "
-         "The walk is in place (`body.walk_in_place`: the root's travel removed). "
-         "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +
-         page.clocks +
-         ".\n\n"
-         "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end (the dress "
+// the page's second paragraph: how the body moves and is answered, and the ablation rows
+std::string body_description(double proxy_mm) {
+  return "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end (the dress "
          "twice, `body.pose_fps = 60`: on walk_08_02 a knee moves farther in a frame than half its thickness, passes "
          "through the hem between two poses and leaves its springs stretched far beyond the limit; the row \"body "
          "posed "
@@ -610,9 +420,47 @@ std::string description(const WalkPage& page) {
          "rows \"the colliders' body simplified\" (`body.collision_triangles`) hand the colliders a copy of the body "
          "with fewer triangles (edge collapses that keep some of its own vertices and their skin; every exact vertex "
          "within " +
-         num(page.proxy_mm, 1) +
+         num(proxy_mm, 1) +
          " mm of the copy) while the oracle measures against the exact body. And "
          "\"travelling\" keeps the root's motion (the maps follow the body).\n\n";
+}
+
+std::string description(const WalkPage& page) {
+  return "Garments dressed on the bind pose (t = 0, sew + drape with `collider.dress_with`), carried through the "
+         "clip's "
+         "lead-in (0 - 1 s), then measured over **two seconds of walking** (1 - 3 s, about two gait cycles) in place, "
+         "on "
+         "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
+         "animation time and the cloth takes `steps/frame` steps of dt per frame, in our stable regime (its limit the "
+         "walking scenes': walking Eq. 5 as warm-started impulses, 3 passes, for the dress, Eq. 5's sweeps, 16 passes, "
+         "for "
+         "the skirt, run again after the collision response; results/limiters.md "
+         "measures the alternatives, Eq. 6 and fewer passes among them) and at the papers' "
+         "clock (`solver.regime = papers`: dt 5 ms, equal point masses, soft springs, 32 limit passes; see "
+         "dressing-t1; "
+         "the passes here stop once they change no point by more than " +
+         std::string(kPapersTolerance) +
+         " mm, `solver.limit_tolerance_mm`) with the walking "
+         "paper's averaging limit (Eq. 5, `solver.limit = velocity`): with its directional limit (Eq. 6, the paper's "
+         "choice for moving bodies, and the regime's default) the dress with sleeves diverges at that clock within the "
+         "first frames of the walk (the ablation row: that limit's rear-catches-up rule does not keep momentum), "
+         "while Eq. 5's mass-weighted mean keeps it; the rows \"projection limit\" hold the strain by a fast "
+         "projection of "
+         "the structural springs instead (Goldenthal et al. 2007, beyond the papers; results/limiters.md); the rows "
+         "\"projective solve\" keep the stable regime's springs and masses and step them by backward Euler in "
+         "local/global iterations on a matrix factored once (Liu et al. 2013, beyond the papers; `solver.integrator = "
+         "projective`, 2 iterations) at 20 steps of 1.67 ms a frame instead of about 200 explicit ones. s/frame = wall "
+         "time of the animation phase "
+         "per frame: skinning (LBS, our analogue of the paper's reading the body file), map re-render, BVH refit or "
+         "(vdb) the body's signed distance field voxelised again, and cloth (CD&R + CS); vdb runs half a second in the "
+         "stable regime only, its per-frame voxelisation costing seconds. The paper's figures include rendering the "
+         "scene on screen, ours do not. The exact oracle measures **every frame** (outside s/frame): the worst and the "
+         "mean frame's inside and crossings, the worst frame's depth; the verdict counts the worst frame. A garment "
+         "whose "
+         "seams are still open when the walk starts (gap > 2 mm) gets no timings: it is listed as not dressed. "
+         "The walk is in place (`body.walk_in_place`: the root's travel removed). "
+         "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +
+         page.clocks + ".\n\n" + body_description(page.proxy_mm);
 }
 
 void walking_t2(ExperimentContext& ctx) {
@@ -633,7 +481,7 @@ void walking_t2(ExperimentContext& ctx) {
                                : "\nAnimated binary glTF of the walks (12 frames kept, for results/index.html's "
                                  "viewer): " +
                                      page.models + ".\n"),
-      summary(page.frontier, page.meeting, page.fastest));
+      speed_summary(page.frontier, page.meeting, page.fastest));
 }
 
 }  // namespace

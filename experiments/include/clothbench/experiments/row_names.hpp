@@ -28,4 +28,12 @@ inline std::string walking_t2(const std::string& garment, const std::string& col
   return "walking-t2/" + garment + "/" + collider + variant;
 }
 
+// walking-f8/tablecloth/LIMIT: the tablecloth on the moving sphere under one strain limiter
+inline std::string walking_f8(const std::string& limit) { return "walking-f8/tablecloth/" + limit; }
+
+// dressing-f8/GARMENT-VERTICES/COLLIDER: one size of a garment's time-per-iteration series
+inline std::string dressing_f8(const std::string& garment, int vertices, const std::string& collider) {
+  return "dressing-f8/" + garment + "-" + std::to_string(vertices) + "/" + collider;
+}
+
 }  // namespace clothbench::row_names
