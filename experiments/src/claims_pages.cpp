@@ -178,6 +178,7 @@ Claim linear_claim(ExperimentContext& ctx) {
     std::vector<PowerFit> repeated;
     for (const auto& [j, ys] : s.repeated)
       if (ys.size() == x.size()) repeated.push_back(power_fit(x, ys));
+    if (repeated.empty()) repeated.push_back(f);  // one run per size: the medians are the one series
     const Growth g = judge_growth(f, repeated);
     c.numbers += series + " k " + num(f.k, 2) + " (" + num(f.k_low, 2) + "-" + num(f.k_high, 2) + ", " +
                  std::to_string(repeated.size()) + " series); ";
