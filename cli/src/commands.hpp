@@ -16,6 +16,7 @@ void add_demo_command(CLI::App& app, Action& action);
 void add_maps_command(CLI::App& app, Action& action);
 void add_garment_command(CLI::App& app, Action& action);
 void add_body_command(CLI::App& app, Action& action);
+void add_measure_command(CLI::App& app, Action& action);
 void add_run_command(CLI::App& app, Action& action);
 void add_reproduce_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);

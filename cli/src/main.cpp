@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   clothbench::cli::add_maps_command(app, action);
   clothbench::cli::add_garment_command(app, action);
   clothbench::cli::add_body_command(app, action);
+  clothbench::cli::add_measure_command(app, action);
   clothbench::cli::add_run_command(app, action);
   clothbench::cli::add_reproduce_command(app, action);
   clothbench::cli::add_compare_command(app, action);
