@@ -32,8 +32,11 @@ int run_measure(const MeasureArgs& a) {
     std::cout << j.dump(2) << "\n";
     return 0;
   }
-  std::cout << a.file << (a.animation.empty() ? " (rest pose)" : " at " + std::to_string(a.at) + " s of " + a.animation)
-            << "\n";
+  std::cout << a.file;
+  if (a.animation.empty())
+    std::cout << " (rest pose)\n";
+  else
+    std::cout << " at " << a.at << " s of " << a.animation << "\n";
   for (const Measurement& x : m.all)
     std::cout << "  " << std::left << std::setw(18) << x.name << std::right << std::fixed << std::setprecision(1)
               << std::setw(7) << 100 * x.value_m << " cm   at " << std::setw(6) << 100 * x.height_m << " cm   " << x.how

@@ -125,19 +125,25 @@ double girth_at(const BodyFrame& body, double h) {
   return loops.empty() ? 0 : loops.front().girth();
 }
 
-// where the legs part: the lowest height above lo at which one loop carries the body (the others under a fifth of
-// its area: hands) and lies across the middle (|x| of its centroid under 3 cm)
+// "37 cm" for a height [m]
+std::string cm(double m) { return std::to_string(static_cast<int>(std::lround(100 * m))) + " cm"; }
+
+// where the legs join: going up from lo, past sections with two legs (two loops of more than a fifth of the
+// largest's area: hands are less), the first in which one loop carries the body across the middle (the |x| of its
+// centroid under 3 cm)
 double crotch_height(const BodyFrame& body, double lo, double hi) {
+  bool legs = false;
   for (double h = lo; h <= hi; h += kStep) {
     const auto loops = cross_section(body, h);
     if (loops.empty()) continue;
     const double big = loops.front().area();
     const auto significant =
         std::count_if(loops.begin(), loops.end(), [&](const SectionLoop& l) { return l.area() > 0.2 * big; });
-    if (significant == 1 && std::abs(loops.front().centroid().x()) < 0.03) return h;
+    if (significant >= 2) legs = true;
+    if (legs && significant == 1 && std::abs(loops.front().centroid().x()) < 0.03) return h;
   }
-  throw std::invalid_argument("measure: the legs do not part between " + std::to_string(lo) + " and " +
-                              std::to_string(hi) + " m (no crotch found): the body must stand with its legs apart");
+  throw std::invalid_argument("measure: no legs that part and join between " + cm(lo) + " and " + cm(hi) +
+                              " above the soles (no crotch): the body must stand with its legs apart");
 }
 
 // where the arms join the torso: going up from lo, the last section before the largest loop widens by more than
@@ -151,15 +157,15 @@ double armpit_height(const BodyFrame& body, double lo, double hi) {
     if (last_width > 0 && w - last_width > 0.04) return h - kStep;
     last_width = w;
   }
-  throw std::invalid_argument("measure: the arms do not join the torso between " + std::to_string(lo) + " and " +
-                              std::to_string(hi) + " m (no armpit found): the arms must hang away from the torso");
+  throw std::invalid_argument("measure: the arms do not join the torso between " + cm(lo) + " and " + cm(hi) +
+                              " above the soles (no armpit): the arms must hang away from the torso");
 }
 
 // the upper arm's girth: the second largest loop just below the armpit (the torso is the largest)
 double upper_arm_girth(const BodyFrame& body, double h) {
   const auto loops = cross_section(body, h);
   if (loops.size() < 2 || loops[1].area() < 0.05 * loops[0].area())
-    throw std::invalid_argument("measure: no arm apart from the torso " + std::to_string(h) + " m high");
+    throw std::invalid_argument("measure: no arm apart from the torso " + cm(h) + " above the soles");
   return loops[1].girth();
 }
 
