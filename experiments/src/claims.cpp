@@ -41,14 +41,6 @@ std::map<std::string, nlohmann::json> rows_of(ExperimentContext& ctx, const std:
   return rows;
 }
 
-}  // namespace claim_rows
-
-namespace {
-
-using claim_rows::Claim;
-using claim_rows::kNotRun;
-using claim_rows::rows_of;
-
 // the garments the claims sew at jittered placements (the shirt only in --quick)
 std::vector<std::pair<std::string, int>> placement_garments(const ExperimentContext& ctx) {
   if (ctx.quick()) return {{"dressing/shirt.toml", 1800}};
@@ -74,6 +66,16 @@ std::vector<const RunResult*> placements(ExperimentContext& ctx, const std::stri
   }
   return out;
 }
+
+}  // namespace claim_rows
+
+namespace {
+
+using claim_rows::Claim;
+using claim_rows::kNotRun;
+using claim_rows::placement_garments;
+using claim_rows::placements;
+using claim_rows::rows_of;
 
 // sewing iterations of those runs (-1 for a run that did not sew); their rows are written here, once
 std::vector<long> sew_iterations(ExperimentContext& ctx, const std::string& scene, int vertices,
@@ -141,88 +143,6 @@ Claim iterations_claim(ExperimentContext& ctx) {
                                      std::to_string(within) + ", more in " + std::to_string(more) + " of " +
                                      std::to_string(judged) + " garment x regime cases";
   if (untestable) c.verdict += "; " + std::to_string(untestable) + " case(s) with a placement that did not sew";
-  return c;
-}
-
-// a row that meets every accuracy limit, strain included (a verdict's evidence)
-bool meets_the_limits(const nlohmann::json& row) { return row.value("meets_limits", 0) == 1; }
-
-// the stable-regime object-space row of dressing-t1 for GARMENT with the lowest CD&R time, among
-// those within every limit when any is; empty when there is none
-std::string fastest_object_space(const ExperimentContext& ctx, std::map<std::string, nlohmann::json>& rows,
-                                 const std::string& garment, bool& meets) {
-  std::string best;
-  meets = false;
-  for (const std::string& os : ctx.colliders(in_tables(Family::kObjectSpace))) {
-    const std::string name = row_names::dressing_t1(garment, os);
-    if (!rows.count(name)) continue;
-    const bool ok = meets_the_limits(rows[name]);
-    if (best.empty() || (ok && !meets) ||
-        (ok == meets && rows[name]["cdr_ms"].get<double>() < rows[best]["cdr_ms"].get<double>()))
-      best = name, meets = ok;
-  }
-  return best;
-}
-
-Claim speed_claim(ExperimentContext& ctx) {
-  Claim c{"walking Table 1, dressing Table 1", "IS CD&R is 2-3x faster than OS", "[dressing-t1](dressing-t1.md)", "",
-          kNotRun};
-  auto rows = rows_of(ctx, "dressing-t1");
-  if (rows.empty()) return c;
-  double lo = 1e300, hi = 0;
-  for (const char* g : {"shirt", "dress"}) {
-    bool meets = false;
-    const std::string os = fastest_object_space(ctx, rows, g, meets);
-    if (os.empty()) continue;
-    for (const std::string& is : ctx.colliders(in_tables(Family::kImageSpace))) {
-      const std::string a = row_names::dressing_t1(g, is);
-      if (!rows.count(a)) continue;
-      const double f = rows[os]["cdr_ms"].get<double>() / rows[a]["cdr_ms"].get<double>();
-      // only a pair that meets every limit, strain included, is the verdict's evidence
-      const bool evidence = meets && meets_the_limits(rows[a]);
-      if (evidence) lo = std::min(lo, f), hi = std::max(hi, f);
-      c.numbers += std::string(g) + " " + os.substr(os.rfind('/') + 1) + "/" + is + " " + num(f, 1) + "x" +
-                   (evidence ? "" : " (not counted: a row misses a limit)") + "; ";
-    }
-  }
-  c.numbers =
-      "image space with the papers' z test on 8-bit maps (dressing-t1's default rows) against the fastest "
-      "object-space collider within every limit, stable regime: " +
-      c.numbers;
-  std::string own;  // the papers' own baseline, whatever its accuracy
-  for (const char* g : {"shirt", "dress"}) {
-    const std::string is = row_names::dressing_t1(g, "is-cpu"), os = row_names::dressing_t1(g, "bbtree");
-    if (rows.count(is) && rows.count(os))
-      own += std::string(" ") + g + " " + num(rows[os]["cdr_ms"].get<double>() / rows[is]["cdr_ms"].get<double>(), 1) +
-             "x";
-  }
-  if (!own.empty()) c.numbers += "against the papers' own baseline (bbtree), is-cpu:" + own;
-  // the spread: embree / is-cpu CD&R per iteration over the iterations claim's five placements
-  double spread_lo = 1e300, spread_hi = 0;
-  for (const auto& [scene, vertices] : placement_garments(ctx)) {
-    if (ctx.colliders({"is-cpu", "embree"}).size() < 2) break;
-    const auto is = placements(ctx, scene, vertices, "stable", "is-cpu");
-    const auto os = placements(ctx, scene, vertices, "stable", "embree");
-    std::vector<double> f;
-    for (std::size_t k = 0; k < is.size() && k < os.size(); ++k)
-      f.push_back(os[k]->cdr_ms_per_iteration() / is[k]->cdr_ms_per_iteration());
-    std::sort(f.begin(), f.end());
-    c.numbers += "; over " + std::to_string(f.size()) + " placements (sewing), embree/is-cpu " +
-                 std::filesystem::path(scene).stem().string() + " " + num(f[f.size() / 2], 1) + "x (" +
-                 num(f.front(), 1) + "-" + num(f.back(), 1) + ")";
-    spread_lo = std::min(spread_lo, f.front()), spread_hi = std::max(spread_hi, f.back());
-  }
-  const std::string range = num(lo, 1) + "-" + num(hi, 1) + "x";
-  c.verdict = hi == 0   ? "untestable: no garment ran with both methods within every limit"
-              : lo > 3  ? "holds, by more (" + range + ")"
-              : lo >= 2 ? (hi <= 3 ? "holds (" : "holds, at least 2x (") + range + ")"
-              : lo >= 1 ? "holds only partly: image space is faster by " + range + ", under 2x in places"
-                        : "fails in places: the fastest object-space collider is faster (" + range + ")";
-  if (spread_hi > 0)
-    c.verdict += spread_lo >= 1
-                     ? "; embree is slower at every placement (" + num(spread_lo, 1) + "-" + num(spread_hi, 1) + "x)"
-                     : "; not beyond the spread: embree is faster at some placement (" + num(spread_lo, 1) + "-" +
-                           num(spread_hi, 1) + "x)";
   return c;
 }
 
@@ -560,7 +480,7 @@ void claims(ExperimentContext& ctx) {
                           provot_claim(),
                           claim_rows::directional_claim(ctx),
                           reaction_claim(ctx),
-                          speed_claim(ctx)};
+                          claim_rows::speed_claim(ctx)};
   list.push_back(claim_rows::face_queries_claim(ctx));
   list.push_back(claim_rows::box_tree_claim(ctx));
   list.push_back(claim_rows::views_claim(ctx));
