@@ -42,8 +42,10 @@ std::string speed_verdict(double lo, double hi, const std::vector<double>& media
     const double m_lo = *std::min_element(medians.begin(), medians.end());
     const double m_hi = *std::max_element(medians.begin(), medians.end());
     const double a_lo = *std::min_element(all.begin(), all.end()), a_hi = *std::max_element(all.begin(), all.end());
-    const std::string spread = "medians " + num(m_lo, 1) + "-" + num(m_hi, 1) +
-                               "x over the garments, every placement " + num(a_lo, 1) + "-" + num(a_hi, 1) + "x";
+    const std::string spread =
+        "the median of " + std::to_string(medians.size()) +
+        (medians.size() == 1 ? " garment " + num(m_lo, 1) : " garments " + num(m_lo, 1) + "-" + num(m_hi, 1)) +
+        "x, every placement " + num(a_lo, 1) + "-" + num(a_hi, 1) + "x";
     return a_lo >= 2   ? "holds beyond the spread (" + spread + ")"
            : m_lo >= 2 ? "does not hold beyond the spread: at least 2x on the medians, under 2x at some placement (" +
                              spread + ")"
@@ -110,7 +112,7 @@ Claim speed_claim(ExperimentContext& ctx) {
     }
     if (f.empty()) continue;
     std::sort(f.begin(), f.end());
-    c.numbers += "; over " + std::to_string(f.size()) + " placements (sewing), embree/is-cpu " +
+    c.numbers += "; over " + std::to_string(f.size()) + " placements, embree/is-cpu " +
                  std::filesystem::path(scene).stem().string() + " median " + num(f[f.size() / 2], 1) + "x (" +
                  num(f.front(), 1) + "-" + num(f.back(), 1) + ")";
     medians.push_back(f[f.size() / 2]);
