@@ -46,6 +46,7 @@ class Impulses final : public Limiter {
   };
   struct Touch {
     int i;          // a vertex in contact, or with face queries a quad whose midpoint is (contacts[nv + quad])
+    Real w;         // the velocity change a unit impulse along the normal gives it: its point's, or the quad's
     Real push = 0;  // the body's accumulated impulse on it along the contact normal [kg m/s]
   };
 
@@ -102,10 +103,12 @@ void Impulses::gather_touches(const LimitState& s) {
   const Eigen::Index nv = s.x.cols();
   for (Eigen::Index i = 0; i < nv; ++i)
     if (s.contacts[static_cast<std::size_t>(i)].hit && w(static_cast<int>(i)) > 0)
-      touches_.push_back({static_cast<int>(i)});
-  for (std::size_t c = static_cast<std::size_t>(nv); c < s.contacts.size(); ++c)
-    if (s.contacts[c].hit && face_inverse_mass(s.mesh, static_cast<int>(c) - static_cast<int>(nv)) > 0)
-      face_touches_.push_back({static_cast<int>(c) - static_cast<int>(nv)});
+      touches_.push_back({static_cast<int>(i), w(static_cast<int>(i))});
+  for (std::size_t c = static_cast<std::size_t>(nv); c < s.contacts.size(); ++c) {
+    const int q = static_cast<int>(c) - static_cast<int>(nv);
+    const Real wq = face_inverse_mass(s.mesh, q);
+    if (s.contacts[c].hit && wq > 0) face_touches_.push_back({q, wq});
+  }
 }
 
 Real Impulses::face_inverse_mass(const ClothMesh& mesh, int q) const {
@@ -122,7 +125,7 @@ void Impulses::warm_start(LimitState& s) {
   // the last step's impulses, along the springs and the contact normals as they are now
   for (Touch& t : touches_) {
     t.push = kWarm * push_warm_[static_cast<std::size_t>(t.i)];
-    s.v.col(point(t.i)) += t.push * w(t.i) * s.contacts[static_cast<std::size_t>(t.i)].normal;
+    s.v.col(point(t.i)) += t.push * t.w * s.contacts[static_cast<std::size_t>(t.i)].normal;
   }
   const auto nv = static_cast<std::size_t>(s.x.cols());
   for (Touch& t : face_touches_) {
@@ -196,12 +199,12 @@ Real Impulses::pass_touches(LimitState& s) {
   for (Touch& t : touches_) {
     const Contact& c = s.contacts[static_cast<std::size_t>(t.i)];
     const auto p = static_cast<Eigen::Index>(point(t.i));
-    const Real next = std::max(Real(0), t.push - (s.v.col(p) - c.body_velocity).dot(c.normal) / w(t.i));
+    const Real next = std::max(Real(0), t.push - (s.v.col(p) - c.body_velocity).dot(c.normal) / t.w);
     const Real change = next - t.push;
     if (change == 0) continue;
     t.push = next;
-    s.v.col(p) += change * w(t.i) * c.normal;
-    largest = std::max(largest, std::abs(change) * w(t.i));
+    s.v.col(p) += change * t.w * c.normal;
+    largest = std::max(largest, std::abs(change) * t.w);
   }
   return largest;
 }
@@ -215,8 +218,7 @@ Real Impulses::pass_face_touches(LimitState& s) {
     const Contact& c = s.contacts[nv + static_cast<std::size_t>(t.i)];
     Vec3 mid = Vec3::Zero();
     for (int k = 0; k < 4; ++k) mid += Real(0.25) * s.v.col(point(s.mesh.quads(k, t.i)));
-    const Real wq = face_inverse_mass(s.mesh, t.i);
-    const Real next = std::max(Real(0), t.push - (mid - c.body_velocity).dot(c.normal) / wq);
+    const Real next = std::max(Real(0), t.push - (mid - c.body_velocity).dot(c.normal) / t.w);
     const Real change = next - t.push;
     if (change == 0) continue;
     t.push = next;
@@ -224,7 +226,7 @@ Real Impulses::pass_face_touches(LimitState& s) {
       const int i = s.mesh.quads(k, t.i);
       s.v.col(point(i)) += Real(0.25) * change * w(i) * c.normal;
     }
-    largest = std::max(largest, std::abs(change) * wq);
+    largest = std::max(largest, std::abs(change) * t.w);
   }
   return largest;
 }
