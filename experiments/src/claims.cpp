@@ -16,6 +16,7 @@
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
 #include "clothbench/experiments/row_names.hpp"
+#include "clothbench/experiments/statistics.hpp"
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/simulator.hpp"
@@ -92,11 +93,10 @@ std::vector<long> sew_iterations(ExperimentContext& ctx, const std::string& scen
 }
 
 // "median (min-max)" of sewing iterations, or how many did not sew or miss a limit
-std::string spread_text(std::vector<long> v) {
+std::string spread_text(const std::vector<long>& v) {
   const auto unsewn = std::count(v.begin(), v.end(), -1L);
   if (unsewn) return std::to_string(unsewn) + " of " + std::to_string(v.size()) + " not sewn or missing a limit";
-  std::sort(v.begin(), v.end());
-  return std::to_string(v[v.size() / 2]) + " (" + std::to_string(v.front()) + "-" + std::to_string(v.back()) + ")";
+  return median_range(std::vector<double>(v.begin(), v.end()), 0);
 }
 
 Claim iterations_claim(ExperimentContext& ctx) {
@@ -393,12 +393,6 @@ std::string reaction_walking(ExperimentContext& ctx, std::string& numbers) {
   return "walking body: " + verdict + " (with it: less penetration for " + std::to_string(better) + ", more for " +
          std::to_string(worse) + ", the same for " + std::to_string(same) + " of " + std::to_string(n) +
          " garments, judged by the worst frame's depth and the mean frame's inside)";
-}
-
-// "median (min-max)" of a figure over placements
-std::string median_range(std::vector<double> v, int digits) {
-  std::sort(v.begin(), v.end());
-  return num(v[v.size() / 2], digits) + " (" + num(v.front(), digits) + "-" + num(v.back(), digits) + ")";
 }
 
 Claim reaction_claim(ExperimentContext& ctx) {

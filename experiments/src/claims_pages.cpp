@@ -49,36 +49,40 @@ void compare_smallest(Claim& c, std::map<std::string, nlohmann::json>& rows, con
                   : "holds for " + std::to_string(fewer) + " of " + std::to_string(fewer + not_fewer) + " garments";
 }
 
-// dressing-f8's series per "GARMENT COLLIDER": vertices, the median run's time, and each repetition's times (the
-// j-th run of every size)
+// dressing-f8's series per "GARMENT COLLIDER", sizes ascending: vertices, the median run's time, and each repeated
+// series' times (the j-th run of every size; with one run per size, the medians are the one series)
 struct TimeSeries {
   std::vector<double> x, y;
-  std::map<int, std::vector<double>> repeated;
+  std::vector<std::vector<double>> runs;
 };
 std::map<std::string, TimeSeries> f8_series(ExperimentContext& ctx) {
-  std::map<std::string, TimeSeries> out;
   std::ifstream in(ctx.path("dressing-f8.json"));
   const auto doc = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
-  if (doc.is_discarded() || !doc.contains("benchmarks")) return out;
+  if (doc.is_discarded() || !doc.contains("benchmarks")) return {};
   // row_names::dressing_f8: dressing-f8/GARMENT-N/COLLIDER
   const auto series_of = [](const std::string& name) {
     const auto a = name.find('/'), dash = name.find('-', a), b = name.rfind('/');
     return name.substr(a + 1, dash - a - 1) + " " + name.substr(b + 1);
   };
-  for (const auto& [name, r] : rows_of(ctx, "dressing-f8")) {
-    auto& s = out[series_of(name)];
-    s.x.push_back(r["vertices"].get<double>());
-    s.y.push_back(row_time_ms(r, "real_time"));
-  }
-  // the runs in the file's order: sizes ascending within a series, as the medians above (rows_of sorts by name)
-  std::map<std::string, std::vector<std::pair<double, const nlohmann::json*>>> runs;
+  // per series and size: the median's time, and each run's by its repetition index
+  std::map<std::string, std::map<double, std::pair<double, std::map<int, double>>>> sizes;
+  for (const auto& [name, r] : rows_of(ctx, "dressing-f8"))
+    sizes[series_of(name)][r["vertices"].get<double>()].first = row_time_ms(r, "real_time");
   for (const auto& r : doc["benchmarks"])
     if (r.value("run_type", "iteration") != "aggregate" && r.contains("repetition_index"))
-      runs[series_of(r.value("name", ""))].emplace_back(r["vertices"].get<double>(), &r);
-  for (auto& [key, rs] : runs) {
-    std::stable_sort(rs.begin(), rs.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
-    for (const auto& [v, r] : rs)
-      out[key].repeated[r->value("repetition_index", 0)].push_back(row_time_ms(*r, "real_time"));
+      sizes[series_of(r.value("name", ""))][r["vertices"].get<double>()].second[r.value("repetition_index", 0)] =
+          row_time_ms(r, "real_time");
+  std::map<std::string, TimeSeries> out;
+  for (const auto& [key, by_size] : sizes) {
+    TimeSeries& s = out[key];
+    std::map<int, std::vector<double>> runs;
+    for (const auto& [n, times] : by_size) {
+      s.x.push_back(n), s.y.push_back(times.first);
+      for (const auto& [j, t] : times.second) runs[j].push_back(t);
+    }
+    for (auto& [j, run] : runs)
+      if (run.size() == s.x.size()) s.runs.push_back(std::move(run));
+    if (s.runs.empty()) s.runs.push_back(s.y);
   }
   return out;
 }
@@ -168,20 +172,12 @@ Claim linear_claim(ExperimentContext& ctx) {
   // the verdict is the paper's figure's: the shirt with image space; the rest beside it. Each series is judged as
   // dressing-f8 judges it: the medians' interval, a departure only where every repeated series departs alike
   int linear = 0, departs = 0, judged = 0;
-  for (auto [series, s] : all) {
-    std::vector<std::size_t> order(s.x.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return s.x[i] < s.x[j]; });
-    std::vector<double> x, y;
-    for (std::size_t i : order) x.push_back(s.x[i]), y.push_back(s.y[i]);
-    const PowerFit f = power_fit(x, y);
-    std::vector<PowerFit> repeated;
-    for (const auto& [j, ys] : s.repeated)
-      if (ys.size() == x.size()) repeated.push_back(power_fit(x, ys));
-    if (repeated.empty()) repeated.push_back(f);  // one run per size: the medians are the one series
-    const Growth g = judge_growth(f, repeated);
+  for (const auto& [series, s] : all) {
+    const GrowthFit fit = fit_growth(s.x, s.y, s.runs);
+    const PowerFit& f = fit.medians;
+    const Growth g = fit.growth;
     c.numbers += series + " k " + num(f.k, 2) + " (" + num(f.k_low, 2) + "-" + num(f.k_high, 2) + ", " +
-                 std::to_string(repeated.size()) + " series); ";
+                 std::to_string(fit.repeated.size()) + " series); ";
     const auto space = series.find(' ');  // "GARMENT COLLIDER"
     const std::optional<ColliderInfo> info = collider_info(series.substr(space + 1));
     if (series.substr(0, space) != "shirt" || !info || info->family != Family::kImageSpace) continue;

@@ -23,10 +23,7 @@ std::string exponent_cell(const PowerFit& f) {
 std::string series_cell(const std::vector<PowerFit>& fits) {
   std::vector<double> k;
   for (const PowerFit& f : fits) k.push_back(f.k);
-  std::sort(k.begin(), k.end());
-  if (k.empty()) return "-";
-  return num(k[k.size() / 2], 2) + " (" + num(k.front(), 2) + "-" + num(k.back(), 2) + ") of " +
-         std::to_string(k.size());
+  return k.empty() ? "-" : median_range(k, 2) + " of " + std::to_string(k.size());
 }
 
 // one garment and collider at every size: the median run's time per size, and each repetition's series
@@ -35,6 +32,9 @@ struct Series {
   std::vector<std::vector<double>> ys;  // run j of every size: ms per iteration
 };
 
+// the iterations each run is draped for
+long iterations(const ExperimentContext& ctx) { return ctx.quick() ? 10 : 100; }
+
 // one garment and collider placed and draped (gravity, no sewing) for the page's iterations at every size, each
 // size run `repetitions` times (a timing on a shared machine): a table row per size
 Series measure(ExperimentContext& ctx, const std::string& garment, const std::string& c, const std::vector<int>& sizes,
@@ -42,7 +42,7 @@ Series measure(ExperimentContext& ctx, const std::string& garment, const std::st
   Series s;
   for (int n : sizes) {
     std::vector<std::string> sets{"garment.vertices=" + std::to_string(n), "stop.sew=false", "stop.settle_speed=0",
-                                  "stop.max_iterations=" + std::to_string(ctx.quick() ? 10 : 100)};
+                                  "stop.max_iterations=" + std::to_string(iterations(ctx))};
     for (const auto& o : papers_detection(c)) sets.push_back(o);  // the papers' detection, as the paper tables
     const RunResult& r = ctx.run("dressing/" + garment + ".toml", c, sets, {}, repetitions);
     ctx.add_run(r, row_names::dressing_f8(garment, n, c));
@@ -62,31 +62,10 @@ Series measure(ExperimentContext& ctx, const std::string& garment, const std::st
   return s;
 }
 
-// the fits of one series: its exponents (the medians', each repetition's) and a straight line's R^2 and residual
-struct Fits {
-  PowerFit medians;
-  std::vector<PowerFit> repeated;
-  double r2 = 0, residual = 0;  // a straight line's R^2 and largest relative residual
-  Growth growth = Growth::kUndecided;
-};
-
-Fits fit_series(const Series& s) {
-  Fits f;
-  double a = 0, b = 0;
-  linear_fit(s.x, s.y, a, b, f.r2);
-  for (std::size_t i = 0; i < s.x.size(); ++i)
-    f.residual = std::max(f.residual, std::abs(s.y[i] - (a + b * s.x[i])) / s.y[i]);
-  f.medians = power_fit(s.x, s.y);
-  for (const auto& y : s.ys) f.repeated.push_back(power_fit(s.x, y));
-  f.growth = judge_growth(f.medians, f.repeated);
-  return f;
-}
-
 // the paper's Fig. 8 is the shirt; the dress is a second series
 void dressing_f8(ExperimentContext& ctx) {
   const std::vector<int> sizes = ctx.quick() ? std::vector<int>{500, 1000, 2000, 3500}
                                              : std::vector<int>{500, 1000, 2000, 3500, 5000, 8000, 12000, 20000};
-  const long iterations = ctx.quick() ? 10 : 100;  // measure()'s
   // runs per size: five of the shirt, whose image-space series the linearity claim is judged on (a verdict on
   // timings rests on five runs at least), three of the dress beside it
   const auto repetitions = [&](const std::string& garment) { return ctx.quick() ? 1 : garment == "shirt" ? 5 : 3; };
@@ -104,7 +83,7 @@ void dressing_f8(ExperimentContext& ctx) {
   for (const char* garment : {"shirt", "dress"})
     for (const auto& c : ctx.colliders(in_tables())) {
       const Series s = measure(ctx, garment, c, sizes, repetitions(garment), t);
-      const Fits f = fit_series(s);
+      const GrowthFit f = fit_growth(s.x, s.y, s.ys);
       if (garment == std::string("shirt"))
         shirt_fits += std::string(shirt_fits.empty() ? "" : "; ") + c + " k " + exponent_cell(f.medians) +
                       ", the repeated series " + series_cell(f.repeated) + ", " + growth_text(f.growth);
@@ -121,7 +100,7 @@ void dressing_f8(ExperimentContext& ctx) {
                             {"series", series}});
   ctx.write("dressing-f8", "Dressing paper Fig. 8: time per iteration vs cloth vertices",
             "The shirt (the paper's Fig. 8) and the dress (a second series) meshed at " + std::to_string(sizes.size()) +
-                " sizes, placed and draped (gravity, no sewing) for " + std::to_string(iterations) +
+                " sizes, placed and draped (gravity, no sewing) for " + std::to_string(iterations(ctx)) +
                 " iterations, each size of the shirt run " + runs_text("shirt") + ", of the dress " +
                 runs_text("dress") +
                 " (the run with the median time shown; spread = (slowest - fastest) / median); ms "

@@ -1,10 +1,13 @@
-// linear_fit: least squares and R^2; power_fit: the exponent of y = a + b x^k with its profile confidence interval.
+// linear_fit: least squares and R^2; power_fit: the exponent of y = a + b x^k with its profile confidence interval;
+// fit_growth: both on a series of timings against size, with the verdict.
 #include "clothbench/experiments/statistics.hpp"
 
 #include <algorithm>
 #include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <limits>
+
+#include "clothbench/bench/report.hpp"
 
 namespace clothbench {
 
@@ -84,6 +87,24 @@ const char* growth_text(Growth g) {
     case Growth::kStraddles: return "undecided (the interval excludes 1, the repeated series lie on both sides of it)";
   }
   return "";
+}
+
+GrowthFit fit_growth(const std::vector<double>& x, const std::vector<double>& y,
+                     const std::vector<std::vector<double>>& runs) {
+  GrowthFit f;
+  double a = 0, b = 0;
+  linear_fit(x, y, a, b, f.r2);
+  for (std::size_t i = 0; i < x.size(); ++i) f.residual = std::max(f.residual, std::abs(y[i] - (a + b * x[i])) / y[i]);
+  f.medians = power_fit(x, y);
+  for (const auto& run : runs) f.repeated.push_back(power_fit(x, run));
+  f.growth = judge_growth(f.medians, f.repeated);
+  return f;
+}
+
+std::string median_range(std::vector<double> v, int digits) {
+  if (v.empty()) return "-";
+  std::sort(v.begin(), v.end());
+  return num(v[v.size() / 2], digits) + " (" + num(v.front(), digits) + "-" + num(v.back(), digits) + ")";
 }
 
 }  // namespace clothbench

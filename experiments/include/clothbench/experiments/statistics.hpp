@@ -1,5 +1,6 @@
 #pragma once
 /// Statistics the experiments report beside their tables (timing statistics of runs: bench/timing_stats.hpp).
+#include <string>
 #include <vector>
 
 namespace clothbench {
@@ -25,5 +26,20 @@ enum class Growth { kLinear, kAbove, kBelow, kUndecided, kStraddles };
 Growth judge_growth(const PowerFit& medians, const std::vector<PowerFit>& series);
 /// The verdict in words: "linear (1 inside the interval)", "above linear", ...
 const char* growth_text(Growth g);
+
+/// Time against size fitted as dressing Fig. 8 is judged: the exponent of the medians `y`, of each repeated series in
+/// `runs` (the j-th run of every size), their verdict, and a straight line's R^2 and largest relative residual
+/// beside them. x, y and every series list the sizes in one order.
+struct GrowthFit {
+  PowerFit medians;
+  std::vector<PowerFit> repeated;
+  Growth growth = Growth::kUndecided;
+  double r2 = 0, residual = 0;
+};
+GrowthFit fit_growth(const std::vector<double>& x, const std::vector<double>& y,
+                     const std::vector<std::vector<double>>& runs);
+
+/// "median (min-max)" of the values, each with `digits` decimals (of an even count, the upper middle value).
+std::string median_range(std::vector<double> v, int digits);
 
 }  // namespace clothbench
