@@ -6,7 +6,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <utility>
 
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
@@ -20,18 +22,16 @@ void expect_a_standing_body(const BodyMeasurements& m, const std::string& which)
   for (const auto& x : m.all)
     std::printf("[ measure ] %s %s %.1f cm at %.1f cm\n", which.c_str(), x.name.c_str(), 100 * x.value_m,
                 100 * x.height_m);
-  EXPECT_LT(m["knee girth"].height_m, m["crotch height"].height_m) << which;
-  EXPECT_LT(m["crotch height"].height_m, m["hip girth"].height_m) << which;
-  EXPECT_LT(m["hip girth"].height_m, m["waist girth"].height_m) << which;
-  EXPECT_LT(m["waist girth"].height_m, m["bust girth"].height_m) << which;
-  EXPECT_LT(m["bust girth"].height_m, m["armpit height"].height_m) << which;
-  EXPECT_LT(m["armpit height"].height_m, m["neck girth"].height_m) << which;
-  EXPECT_LT(m["neck girth"].height_m, m["stature"].value_m) << which;
-  EXPECT_LT(m["waist girth"].value_m, m["hip girth"].value_m) << which;
-  EXPECT_LT(m["waist girth"].value_m, m["bust girth"].value_m) << which;
-  EXPECT_LT(m["neck girth"].value_m, m["waist girth"].value_m) << which;
-  EXPECT_LT(m["knee girth"].value_m, m["thigh girth"].value_m) << which;
-  EXPECT_LT(m["upper arm girth"].value_m, m["thigh girth"].value_m) << which;
+  const char* upwards[] = {"knee girth", "crotch height", "hip girth",  "waist girth",
+                           "bust girth", "armpit height", "neck girth", "stature"};
+  for (std::size_t i = 0; i + 1 < std::size(upwards); ++i)
+    EXPECT_LT(m[upwards[i]].height_m, m[upwards[i + 1]].height_m) << which << ": " << upwards[i];
+  const std::pair<const char*, const char*> smaller[] = {{"waist girth", "hip girth"},
+                                                         {"waist girth", "bust girth"},
+                                                         {"neck girth", "waist girth"},
+                                                         {"knee girth", "thigh girth"},
+                                                         {"upper arm girth", "thigh girth"}};
+  for (const auto& [a, b] : smaller) EXPECT_LT(m[a].value_m, m[b].value_m) << which << ": " << a << " < " << b;
   EXPECT_GT(m["inseam"].value_m, 0.35 * m["stature"].value_m) << which;
 }
 
