@@ -47,8 +47,9 @@ std::vector<std::string> summary(ExperimentContext& ctx, std::pair<int, int> mee
                        : c.is + " sews in fewer iterations than " + c.os + " on " + std::to_string(fewer) + counted +
                              "; its collision time per iteration over " + c.os + "'s is " + ratios + " (less on " +
                              std::to_string(cheaper) + counted + ", one run each" + left_out(out) + ")") +
-                  ". claims.md sews both garments at five placements. " + std::to_string(meeting.first) + " of the " +
-                  std::to_string(meeting.second) + " rows below meet every limit, strain included.");
+                  ". claims.md sews both garments at five placements and judges both on them, with their spread. " +
+                  std::to_string(meeting.first) + " of the " + std::to_string(meeting.second) +
+                  " rows below meet every limit, strain included.");
   return lines;
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -98,23 +99,25 @@ std::string ExperimentContext::grid_note(std::size_t runs) const {
 }
 
 const RunResult& ExperimentContext::run(const std::string& scene, const std::string& collider,
-                                        const std::vector<std::string>& sets, const RunOptions& options,
-                                        int at_least) {
+                                        const std::vector<std::string>& sets, const RunOptions& options, int at_least) {
   const std::string key = cache_key(scene, collider, sets);
-  auto it = cache_.find(key);
-  if (it == cache_.end()) {
+  const int n = std::max(repetitions_, at_least);
+  const auto it = cache_.find(key);
+  const int have = it == cache_.end() ? 0 : int(it->second.size());
+  if (have < n) {
+    // cached only once every run has succeeded: a run that throws leaves the request as it was
     const Scene with = scene_for(scene, collider, sets);
-    std::vector<RunResult> runs;
-    const int n = std::max(repetitions_, at_least);
-    for (int r = 0; r < n; ++r) {
+    std::vector<RunResult> more;
+    for (int r = have; r < n; ++r) {
       RunOptions o = options;
       if (o.label.empty()) o.label = with.name + "/" + collider;
       std::cerr << "  running " << o.label << (n > 1 ? " #" + std::to_string(r + 1) : "") << "\n";
-      runs.push_back(run_scene(with, o));
+      more.push_back(run_scene(with, o));
     }
-    it = cache_.emplace(key, std::move(runs)).first;
+    auto& runs = cache_[key];
+    std::move(more.begin(), more.end(), std::back_inserter(runs));
   }
-  return median_run(it->second);
+  return median_run(cache_.at(key));
 }
 
 std::vector<const RunResult*> ExperimentContext::repetitions_of(const RunResult& r) const {
@@ -218,7 +221,8 @@ bool ExperimentContext::chart(const std::string& name, nlohmann::json spec) {
   std::error_code ec;
   std::filesystem::remove(spec_path, ec);
   if (rc != 0) {
-    std::cerr << "  warning: chart " << png << " not drawn (python3 with matplotlib is needed: apt-get install python3-matplotlib)\n";
+    std::cerr << "  warning: chart " << png
+              << " not drawn (python3 with matplotlib is needed: apt-get install python3-matplotlib)\n";
     return false;
   }
   return true;

@@ -46,8 +46,8 @@ std::vector<std::string> summary(ExperimentContext& ctx) {
            ? "none from these rows: on every garment one of them misses a limit" + left_out(out)
            : c.is + "'s collision time per iteration is below " + c.os + "'s on " + std::to_string(cheaper) + " of " +
                  std::to_string(judged) + " garments within every limit (one run each" + left_out(out) + ")") +
-      "; the cloth's own share (CS) follows below for every collider and both regimes, with each row's accuracy in "
-      "dressing-t1.");
+      "; claims.md judges the collision time per iteration over five placements, with their spread; the cloth's own "
+      "share (CS) follows below for every collider and both regimes, with each row's accuracy in dressing-t1.");
   return lines;
 }
 

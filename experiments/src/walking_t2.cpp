@@ -233,7 +233,7 @@ bool dressed(const RunResult& r) { return r.window_seam_gap_mm <= kAccuracyLimit
 
 // the row of one run: timings only for a dressed garment that did not diverge
 std::vector<std::string> walk_row(const std::string& product, const WalkVariant& v, const std::string& collider,
-                                  const RunResult& r, const paper::WalkingT2Row& p) {
+                                  const RunResult& r, const FrameRates& rates, const paper::WalkingT2Row& p) {
   std::vector<std::string> row{product,
                                v.label,
                                v.clip,
@@ -254,8 +254,9 @@ std::vector<std::string> walk_row(const std::string& product, const WalkVariant&
   const bool ok = !r.divergence;
   row.insert(
       row.end(),
-      {num(f.s, 4), num(1 / f.s, 1), num(f.skinning_ms, 2), num(f.maps_ms, 2), num(f.cloth_ms, 2),
-       num(p.s_per_frame, 3) + " / " + num(p.fps, 1), ok ? worst_mean(r, &FrameSample::inside_pct, 2) : "diverged",
+      {num(f.s, 4), num(1 / f.s, 1) + (rates.fps.size() > 1 ? " (" + rates.text() + ")" : ""), num(f.skinning_ms, 2),
+       num(f.maps_ms, 2), num(f.cloth_ms, 2), num(p.s_per_frame, 3) + " / " + num(p.fps, 1),
+       ok ? worst_mean(r, &FrameSample::inside_pct, 2) : "diverged",
        ok ? num(r.frame_max(&FrameSample::depth_max_mm), 1) : "-",
        ok ? worst_mean(r, &FrameSample::crossings_pct, 2) : "-",
        num(100 * r.animate_strain_max, 1) + " / " + num(100 * r.frame_max(&FrameSample::strain_p99), 1),
@@ -270,8 +271,19 @@ struct WalkGarment {
   int vertices;
 };
 
+// a run of walk_garment waiting for its row (the request, for run() to answer again once the contenders for the
+// headline have their runs)
+struct WalkRun {
+  std::size_t garment;
+  WalkVariant variant;
+  std::string scene, collider;
+  std::vector<std::string> sets;
+  double body_fps;
+};
+
 // what walking-t2 gathers over its runs for the page
 struct WalkPage {
+  std::vector<WalkRun> runs;
   MarkdownTable table{{"garment", "variant", "clip", "collider", "vertices", "frames", "steps/frame at dt", "s/frame",
                        "frames/s", "skinning ms/frame", "maps, refit or field ms/frame", "cloth ms/frame (CD&R + CS)",
                        "paper s/frame / frames/s", "inside [%] worst / mean frame", "depth max [mm] worst frame",
@@ -311,11 +323,53 @@ void write_model(ExperimentContext& ctx, const WalkGarment& g, const std::string
       (page.models.empty() ? "" : ", ") + ("[" + std::string(g.product) + ", " + collider + "](" + glb + ")");
 }
 
+// the animation's frame rate of each run of the request that returned r (0 for a run that did not walk)
+FrameRates frame_rates(const ExperimentContext& ctx, const RunResult& r) {
+  FrameRates out;
+  for (const RunResult* each : ctx.repetitions_of(r))
+    out.fps.push_back(each->frames && !each->divergence ? 1 / frame_times(*each).s : 0);
+  return out;
+}
+
+// of the runs of the request that returned r, the one with the median frame rate (of an even count the upper middle)
+const RunResult& median_rate_run(const ExperimentContext& ctx, const RunResult& r) {
+  auto runs = ctx.repetitions_of(r);
+  std::sort(runs.begin(), runs.end(),
+            [](const RunResult* a, const RunResult* b) { return frame_times(*a).s > frame_times(*b).s; });
+  return *runs[runs.size() / 2];
+}
+
+// the dress's rows on walk_07_01 within every limit at every frame whose one run reaches kContender of the fastest
+// such row's rate, of any collider or of the speed paragraph's is-cpu rows, run kHeadlineRuns times: the headlines
+// are chosen among them by their median
+constexpr double kContender = 0.75;
+void repeat_contenders(ExperimentContext& ctx, const std::vector<WalkRun>& runs) {
+  const auto rate = [&](const WalkRun& w) {
+    const RunResult& r = ctx.run(w.scene, w.collider, w.sets);
+    const bool within = w.garment == 1 && w.variant.clip == "walk_07_01" && r.frames && !r.divergence && dressed(r) &&
+                        limit_misses(r).empty();
+    return within ? 1 / frame_times(r).s : 0.0;
+  };
+  const auto frontier = [](const WalkRun& w) { return w.collider == "is-cpu" && w.variant.speed; };
+  double any = 0, speed = 0;
+  for (const WalkRun& w : runs) {
+    any = std::max(any, rate(w));
+    if (frontier(w)) speed = std::max(speed, rate(w));
+  }
+  RunOptions options;
+  options.measure_frames = true;
+  for (const WalkRun& w : runs) {
+    const double fps = rate(w);
+    if (fps > 0 && (fps >= kContender * any || (frontier(w) && fps >= kContender * speed)))
+      ctx.run(w.scene, w.collider, w.sets, options, kHeadlineRuns);
+  }
+}
+
 // one run's row and what the page gathers from it (garment i of the table)
 void account(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, const WalkVariant& variant,
-             const std::string& c, const RunResult& r, double fps, WalkPage& page) {
+             const std::string& c, const RunResult& r, const FrameRates& rates, double fps, WalkPage& page) {
   const bool main = variant.label == "stable" && variant.clip == "walk_07_01";
-  page.table.row(walk_row(g.product, variant, c, r, paper::kWalkingT2[i]));
+  page.table.row(walk_row(g.product, variant, c, r, rates, paper::kWalkingT2[i]));
   // the cloth's clock and what holds the garment, from the is-cpu runs of both regimes on walk_07_01
   if (c == "is-cpu" && (main || (variant.row_suffix == "/papers" && r.frames))) {
     if (main)
@@ -331,17 +385,18 @@ void account(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, const 
     const bool failed = r.frames == 0 || r.divergence || !dressed(r);
     page.frontier.push_back({variant.label, variant.clip, failed ? 0.0 : 1 / frame_times(r).s,
                              failed ? std::string("diverged or not dressed") : accuracy_misses(r), frame_times(r),
-                             100 * r.animate_strain_max, limit_misses(r).size() > limit_misses(r, false).size()});
+                             100 * r.animate_strain_max, limit_misses(r).size() > limit_misses(r, false).size(),
+                             rates});
     if (variant.row_suffix == "/papers-ahead") page.speed_run = r;
   }
   page.proxy_mm = std::max(page.proxy_mm, r.proxy_deviation_mm);
   ctx.add_run(r, row_names::walking_t2(g.name, c, variant.row_suffix));
-  page.meeting.back().second.first += limit_misses(r).empty() ? 1 : 0;
-  ++page.meeting.back().second.second;
+  page.meeting[i].second.first += limit_misses(r).empty() ? 1 : 0;
+  ++page.meeting[i].second.second;
   const double rate = r.frames ? 1 / frame_times(r).s : 0;
   if (i == 1 && variant.clip == "walk_07_01" && limit_misses(r).empty() && (!page.fastest || rate > page.fastest->fps))
-    page.fastest =
-        SpeedRun{variant.label + ", " + c, variant.clip, rate, "", frame_times(r), 100 * r.animate_strain_max, false};
+    page.fastest = SpeedRun{variant.label + ", " + c,   variant.clip, rate, "", frame_times(r),
+                            100 * r.animate_strain_max, false,        rates};
 }
 
 // every variant and collider on one garment (garment i of the table), and its chart of every frame
@@ -376,7 +431,7 @@ void walk_garment(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, W
           sequence.push_back({frame, at, body.positions, body.normals, sim.positions()});
         };
       const RunResult& r = ctx.run(scene, c, sets, options);
-      account(ctx, i, g, variant, c, r, fps, page);
+      page.runs.push_back({i, variant, scene, c, sets, fps});
       if (main) charted.emplace_back(c, r);
       if (animated) write_model(ctx, g, c, sequence, r, page);
       if (c == "is-cpu" && main) write_pictures(ctx, g, fps, sequence, r, page);
@@ -459,6 +514,13 @@ std::string description(const WalkPage& page) {
          "whose "
          "seams are still open when the walk starts (gap > 2 mm) gets no timings: it is listed as not dressed. "
          "The walk is in place (`body.walk_in_place`: the root's travel removed). "
+         "Every row is one run, except the contenders for the headline: the dress's rows on walk_07_01 within every "
+         "limit at every frame whose one run reached " +
+         num(100 * kContender, 0) +
+         " % of the fastest such row's frame rate (of any collider, or of the speed paragraph's is-cpu rows) run " +
+         std::to_string(kHeadlineRuns) +
+         " times in all; their frames/s is the median run's (the run whose figures the row shows) with the range, "
+         "and the headlines are chosen by it. "
          "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +
          page.clocks + ".\n\n" + body_description(page.proxy_mm);
 }
@@ -468,6 +530,12 @@ void walking_t2(ExperimentContext& ctx) {
   const WalkGarment garments[] = {{"skirt", "skirt", 672}, {"dress with sleeves", "dress_sleeves", 2300}};
   WalkPage page;
   for (std::size_t i = 0; i < 2; ++i) walk_garment(ctx, i, garments[i], page);
+  repeat_contenders(ctx, page.runs);
+  for (const WalkRun& w : page.runs) {
+    const RunResult& r = ctx.run(w.scene, w.collider, w.sets);
+    account(ctx, w.garment, garments[w.garment], w.variant, w.collider, median_rate_run(ctx, r), frame_rates(ctx, r),
+            w.body_fps, page);
+  }
   ctx.write(
       "walking-t2", "Walking paper Table 2: animation speed on the walking body",
       description(page) + page.table.str() + "\n" +

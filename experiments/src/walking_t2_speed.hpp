@@ -21,6 +21,14 @@ struct FrameTimes {
 };
 FrameTimes frame_times(const RunResult& r);
 
+// the frame rates of a configuration's runs: a headline rests on kHeadlineRuns of them
+constexpr int kHeadlineRuns = 5;
+struct FrameRates {
+  std::vector<double> fps;  // one per run
+  // "median of 5 runs, 13.9-14.8" or "one run"
+  std::string text() const;
+};
+
 // one of the dress's prepared-ahead runs at the papers' clock: how fast, and what it misses (empty: nothing)
 struct SpeedRun {
   std::string variant, clip;
@@ -29,6 +37,7 @@ struct SpeedRun {
   FrameTimes times;
   double strain_pct;   // the largest strain at any frame [%]
   bool strain_misses;  // over threshold + 1 % at some frame
+  FrameRates rates;    // fps is their median
 };
 
 // the page's opening lines: the paper's frame rates, our fastest row within every limit, the rows that meet them

@@ -59,6 +59,23 @@ TEST(ExperimentContext, PrefetchedRunsEqualRunsInTheProcessButForTimings) {
   std::filesystem::remove_all(out);
 }
 
+// a verdict asks for more runs of a request already made once: run() adds them, the first one kept among them,
+// and asking for fewer changes nothing
+TEST(ExperimentContext, ARequestRunOnceGetsTheRunsAVerdictAsksFor) {
+  const std::string out = test::temp_path("repeat-test");
+  ExperimentContext ctx(out, false, 1, 1);
+  const ExperimentContext::Request q{
+      "walking/tablecloth_sphere.toml", "sphere", {"garment.vertices=64", "stop.drape_max_s=0.02"}};
+  const RunResult* first = &ctx.run(q.scene, q.collider, q.sets);
+  ASSERT_EQ(ctx.repetitions_of(*first).size(), 1u);
+  const nlohmann::json once = without_timings(*first);
+  const auto runs = ctx.repetitions_of(ctx.run(q.scene, q.collider, q.sets, {}, 3));
+  ASSERT_EQ(runs.size(), 3u);
+  for (const RunResult* r : runs) EXPECT_EQ(without_timings(*r), once);  // deterministic: the same run thrice
+  EXPECT_EQ(ctx.repetitions_of(ctx.run(q.scene, q.collider, q.sets, {}, 2)).size(), 3u);
+  std::filesystem::remove_all(out);
+}
+
 // reproduce draws pictures with OpenGL before its grids run; a forked worker inherits OSMesa but not llvmpipe's
 // threads, and is-gl in it waited forever (a full reproduce --jobs 2 hung): is-gl requests stay in this process
 TEST(ExperimentContext, PrefetchLeavesOpenGlToThisProcessOnceItHasDrawn) {

@@ -92,7 +92,8 @@ class ExperimentContext {
   /// identical requests in one `reproduce` share one run. With repetitions > 1 the run is
   /// repeated and the repetition with the median time per iteration is returned; add_run() writes
   /// every repetition's row and the aggregates. `at_least`: repeat it so many times even without --repetitions
-  /// (timings that a verdict rests on); a request already cached keeps the runs it has.
+  /// (timings that a verdict rests on); a request cached with fewer runs is run again until it has them (the
+  /// results returned before for it may then move: ask run() again).
   const RunResult& run(const std::string& scene, const std::string& collider, const std::vector<std::string>& sets = {},
                        const RunOptions& options = {}, int at_least = 1);
   /// Every repetition of the request that returned `r` (r alone when it is not one of run()'s).
