@@ -289,6 +289,38 @@ TEST(Limiters, ImpulsesStopAQuadMidpointMovingIntoTheBody) {
   EXPECT_FLOAT_EQ(v.row(1).mean(), -1);
 }
 
+// the sweeps stop the motion into the body after the response (their second call) of a quad midpoint in contact
+// too, as of a vertex: one push, a quarter to each corner, sewn corners moving as one point
+TEST(Limiters, SweepsStopAQuadMidpointMovingIntoTheBodyAfterTheResponse) {
+  ClothMesh c;
+  c.positions.resize(3, 4);
+  c.springs.resize(2, 4);
+  c.springs << 0, 1, 2, 3, 1, 2, 3, 0;
+  c.kind.assign(4, SpringKind::kStructural);
+  c.rest_length = Scalars::Constant(4, 0.1f);
+  c.quads.resize(4, 1);
+  c.quads << 0, 1, 2, 3;
+  Points3 x(3, 4), v(3, 4);
+  x << 0, 0.1f, 0.1f, 0, 0, 0, 0, 0, 0, 0, 0.1f, 0.1f;  // a square in the plane y = 0
+  const Scalars m = Scalars::Constant(4, 0.01f);
+  const Scalars inv_m = Scalars::Constant(4, 100);
+  std::vector<Contact> contacts(5);  // the four vertices, then the quad's midpoint
+  contacts[4].hit = true;
+  contacts[4].normal = Vec3(0, 1, 0);
+  for (const char* name : {"velocity", "directional", "velocity-zero"})
+    for (const std::vector<std::vector<int>>& merged : {std::vector<std::vector<int>>{}, {{0, 3}}}) {
+      LimitState s{c, x, v, m, inv_m, contacts, merged, Vec3(0, -9.81f, 0), 0.001f};
+      v.setZero();
+      v.row(1) << -1, -2, -1, -1;  // every corner into the body below the midpoint
+      v(2, 1) = 0.5f;              // and one along it, which the body does not stop
+      make_limiter(name, {0.1f, 4})->limit_velocities(s, true);
+      EXPECT_NEAR(v.row(1).mean(), 0, 1e-5f) << name << " sewn " << merged.size();  // the midpoint stopped
+      EXPECT_FLOAT_EQ(v(2, 1), 0.5f) << name;
+      EXPECT_FLOAT_EQ(v(1, 0), v(1, 3)) << name;          // the sewn corners as one point (and alike when not sewn)
+      EXPECT_NEAR(v(1, 1) - v(1, 2), -1, 1e-5f) << name;  // the same push to each corner of equal mass
+    }
+}
+
 TEST(Limiters, SleeveOnASwingingArm) {
   for (const char* limit : {"velocity", "directional", "tethers", "follow", "projection", "impulses"})
     for (int passes : {1, 32}) {

@@ -60,7 +60,8 @@ class VelocitySweep : public Limiter {
   bool hold(int i) {
     if (held_[static_cast<std::size_t>(i)]) return false;
     const int g = group_of_[static_cast<std::size_t>(i)];
-    if (g < 0) held_[static_cast<std::size_t>(i)] = 1;
+    if (g < 0)
+      held_[static_cast<std::size_t>(i)] = 1;
     else
       for (int j : s_->merged[static_cast<std::size_t>(g)]) held_[static_cast<std::size_t>(j)] = 1;
     return true;
@@ -75,28 +76,29 @@ class VelocitySweep : public Limiter {
   Eigen::Map<Vec3> v(int i) const { return Eigen::Map<Vec3>(v_ + 3 * static_cast<std::ptrdiff_t>(i)); }
 
   LimiterParams params_;
-  LimitState* s_ = nullptr;          // the call under way
+  LimitState* s_ = nullptr;  // the call under way
   // its arrays, read in every spring's step: positions, velocities (3 x nv), masses, inverse masses (nv), the step
   const Real* x_ = nullptr;
   Real* v_ = nullptr;
   const Real* m_ = nullptr;
   const Real* inv_m_ = nullptr;
   Real dt_ = 0;
-  std::vector<std::uint8_t> held_;   // per vertex: attached or in contact (and, directional, following one)
+  std::vector<std::uint8_t> held_;  // per vertex: attached or in contact (and, directional, following one)
 
  private:
   void build_adjacency();
   void order_springs_from_held();
   void limit_spring(const SweptSpring& e);
   void stop_inward_contacts();
+  Real face_inverse_mass(Eigen::Index q) const;
   void set_visit_bits(int i, std::size_t after);
   void group_sewn_points();
   void change(int i, const Vec3& dv, Real size);  // v += dv for i and the rest of its group
 
-  std::vector<int> adj_start_, adj_;  // vertex -> neighbours over springs and seam pairs (CSR)
-  std::vector<int> adj_edge_;         // beside adj_: its spring (index < springs) or seam pair (springs + index)
-  std::vector<SweptSpring> sweep_;    // springs nearest held vertices first
-  std::vector<std::uint8_t> order_held_;                             // the held vertices sweep_ was computed for
+  std::vector<int> adj_start_, adj_;      // vertex -> neighbours over springs and seam pairs (CSR)
+  std::vector<int> adj_edge_;             // beside adj_: its spring (index < springs) or seam pair (springs + index)
+  std::vector<SweptSpring> sweep_;        // springs nearest held vertices first
+  std::vector<std::uint8_t> order_held_;  // the held vertices sweep_ was computed for
   std::vector<int> order_level_, order_queue_, order_spring_level_;  // its work space (hops from held vertices)
   std::vector<int> changed_in_pass_;       // per vertex: the last pass (1-based) that changed its velocity
   std::vector<int> sweep_position_;        // per spring: its position in sweep_
@@ -120,6 +122,10 @@ void VelocitySweep<Derived>::begin(LimitState& state) {
   const Contact* contacts = state.contacts.empty() ? nullptr : state.contacts.data();
   std::uint8_t* held = held_.data();
   for (Eigen::Index i = 0; i < nv; ++i) held[i] = inv_m_[i] == 0 || (contacts && contacts[i].hit);
+  // with face queries the corners of a quad whose midpoint is in contact are held by the body as well
+  for (std::size_t c = static_cast<std::size_t>(nv); c < state.contacts.size(); ++c)
+    if (contacts[c].hit)
+      for (int k = 0; k < 4; ++k) held[state.mesh.quads(k, static_cast<Eigen::Index>(c) - nv)] = 1;
   group_sewn_points();
 }
 
@@ -208,9 +214,11 @@ void VelocitySweep<Derived>::build_adjacency() {
   const Eigen::Index nv = mesh.positions.cols();
   std::vector<std::pair<int, int>> edges;
   for (Eigen::Index s = 0; s < mesh.springs.cols(); ++s) edges.emplace_back(mesh.springs(0, s), mesh.springs(1, s));
-  for (Eigen::Index p = 0; p < mesh.seam_pairs.cols(); ++p) edges.emplace_back(mesh.seam_pairs(0, p), mesh.seam_pairs(1, p));
+  for (Eigen::Index p = 0; p < mesh.seam_pairs.cols(); ++p)
+    edges.emplace_back(mesh.seam_pairs(0, p), mesh.seam_pairs(1, p));
   adj_start_.assign(static_cast<std::size_t>(nv + 1), 0);
-  for (const auto& [a, b] : edges) ++adj_start_[static_cast<std::size_t>(a + 1)], ++adj_start_[static_cast<std::size_t>(b + 1)];
+  for (const auto& [a, b] : edges)
+    ++adj_start_[static_cast<std::size_t>(a + 1)], ++adj_start_[static_cast<std::size_t>(b + 1)];
   for (std::size_t i = 1; i < adj_start_.size(); ++i) adj_start_[i] += adj_start_[i - 1];
   adj_.resize(static_cast<std::size_t>(adj_start_.back()));
   adj_edge_.resize(adj_.size());
@@ -278,7 +286,8 @@ void VelocitySweep<Derived>::order_springs_from_held() {
   spring_level.resize(ns);
   std::vector<int> count(static_cast<std::size_t>(unreached) + 2, 0);
   for (std::size_t s = 0; s < ns; ++s) {
-    const int a = level[static_cast<std::size_t>(mesh.springs(0, s))], b = level[static_cast<std::size_t>(mesh.springs(1, s))];
+    const int a = level[static_cast<std::size_t>(mesh.springs(0, s))],
+              b = level[static_cast<std::size_t>(mesh.springs(1, s))];
     spring_level[s] = a < 0 || b < 0 ? unreached : std::min(a, b);
     ++count[static_cast<std::size_t>(spring_level[s]) + 1];
   }
@@ -291,7 +300,8 @@ void VelocitySweep<Derived>::order_springs_from_held() {
     const auto i = static_cast<Eigen::Index>(s);
     const int at = count[static_cast<std::size_t>(spring_level[s])]++;
     sweep_position_[s] = at;
-    sweep_[static_cast<std::size_t>(at)] = {mesh.springs(0, i), mesh.springs(1, i), max_len_factor * mesh.rest_length[i]};
+    sweep_[static_cast<std::size_t>(at)] = {mesh.springs(0, i), mesh.springs(1, i),
+                                            max_len_factor * mesh.rest_length[i]};
   }
 }
 
@@ -305,6 +315,39 @@ void VelocitySweep<Derived>::stop_inward_contacts() {
     const Real vn = (v.col(i) - c.body_velocity).dot(c.normal);
     if (vn < 0) v.col(i) -= vn * c.normal, mark_changed(static_cast<int>(i), -vn);
   }
+  // with face queries, a quad whose midpoint is in contact (contacts[nv + quad], dressing section 6) likewise: the
+  // impulse that stops its midpoint's motion into the body, a quarter to each corner
+  const ClothMesh& mesh = s_->mesh;
+  for (std::size_t c = static_cast<std::size_t>(v.cols()); c < s_->contacts.size(); ++c) {
+    const Contact& contact = s_->contacts[c];
+    const auto q = static_cast<Eigen::Index>(c) - v.cols();
+    if (!contact.hit) continue;
+    Vec3 mid = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) mid += Real(0.25) * v.col(mesh.quads(k, q));
+    const Real vn = (mid - contact.body_velocity).dot(contact.normal), w = face_inverse_mass(q);
+    if (!(vn < 0) || !(w > 0)) continue;
+    for (int k = 0; k < 4; ++k) {
+      const int i = mesh.quads(k, q);
+      if (!fixed(i)) change(i, (Real(-0.25) * vn / (w * mass(i))) * contact.normal, Real(-0.25) * vn / (w * mass(i)));
+    }
+  }
+}
+
+template <class Derived>
+Real VelocitySweep<Derived>::face_inverse_mass(Eigen::Index q) const {
+  // an impulse J at the midpoint, J/4 to each corner, changes the midpoint's velocity by J times this: corners of
+  // one sewn point move it together
+  const ClothMesh& mesh = s_->mesh;
+  const auto point = [&](int i) {
+    const int g = group_of_[static_cast<std::size_t>(i)];
+    return g < 0 ? i : -1 - g;
+  };
+  Real sum = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      if (point(mesh.quads(a, q)) == point(mesh.quads(b, q)) && !fixed(mesh.quads(b, q)))
+        sum += 1 / mass(mesh.quads(b, q));
+  return sum / 16;
 }
 
 template <class Derived>
