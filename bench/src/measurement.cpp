@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "clothbench/bench/cloth_crossings.hpp"
 #include "clothbench/bench/oracle.hpp"
 
 namespace clothbench::runner_detail {
@@ -67,6 +69,21 @@ std::string describe_spring(const Simulator& sim, int s) {
   return text;
 }
 
+// "sleeve_l through front 40, front through back 12": the panels of the crossing springs and of the triangles they
+// pass through, the most frequent three pairs ("" when none cross)
+std::string describe_cloth_crossings(const ClothMesh& mesh, const Pairs& springs, const ClothCrossings& c) {
+  std::map<std::pair<int, int>, int> pairs;
+  for (const auto& [s, q] : c.where) ++pairs[{mesh.panel[std::size_t(springs(0, s))], mesh.panel[std::size_t(mesh.quads(0, q))]}];
+  std::vector<std::pair<int, std::pair<int, int>>> by_count;
+  for (const auto& [p, n] : pairs) by_count.emplace_back(-n, p);
+  std::sort(by_count.begin(), by_count.end());
+  std::string out;
+  for (std::size_t i = 0; i < std::min<std::size_t>(3, by_count.size()); ++i)
+    out += (i ? ", " : "") + mesh.panel_names[std::size_t(by_count[i].second.first)] + " through " +
+           mesh.panel_names[std::size_t(by_count[i].second.second)] + " " + std::to_string(-by_count[i].first);
+  return out;
+}
+
 // the widest opening along the seams: its vertices, their panels and the gap ("" when all are within 0.01 mm)
 std::string describe_seam_gap(const Simulator& sim) {
   const ClothMesh& mesh = sim.mesh();
@@ -96,10 +113,13 @@ double proxy_deviation_mm(const BodyFrame& proxy, const BodyFrame& exact) {
 void measure_frame(const BodyFrame& frame, const Simulator& sim, const StrainStats& strain, double t, RunResult& r) {
   const Oracle oracle(frame);
   Accuracy a = oracle.measure(sim.positions());
-  oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), a);
+  const Pairs springs = structural_springs(sim.mesh());
+  oracle.measure_crossings(sim.positions(), springs, a);
+  const ClothCrossings self = cloth_crossings(sim.positions(), springs, sim.mesh().quads, sim.sewn_points());
   if (a.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm))
     r.depth_max_where = describe_vertex(sim, static_cast<int>(a.deepest), a.depth_max_mm, at_time(t));
-  r.frame_samples.push_back({t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99)});
+  r.frame_samples.push_back(
+      {t, a.inside_pct, a.depth_max_mm, a.crossings_pct, double(strain.max), double(strain.p99), self.pct});
 }
 
 void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
@@ -114,8 +134,11 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   r.accuracy = oracle.measure(points);
   if (r.accuracy.deepest >= 0 && r.accuracy.depth_max_mm > r.frame_max(&FrameSample::depth_max_mm))
     r.depth_max_where = describe_point(sim, r.accuracy.deepest, r.accuracy.depth_max_mm);
-  oracle.measure_crossings(sim.positions(), structural_springs(sim.mesh()), r.accuracy);
+  const Pairs springs = structural_springs(sim.mesh());
+  oracle.measure_crossings(sim.positions(), springs, r.accuracy);
   oracle.measure_faces(sim.positions(), sim.mesh().quads, r.accuracy);
+  const ClothCrossings self = cloth_crossings(sim.positions(), springs, sim.mesh().quads, sim.sewn_points());
+  r.accuracy.cloth_crossings = self.crossings, r.accuracy.cloth_crossings_pct = self.pct;
   // the seams, the strain and the motion left
   r.seam_gap_max_mm = 1e3 * double(sim.seam_gap_max());
   r.seam_gap_where = describe_seam_gap(sim);
@@ -124,6 +147,7 @@ void measure(const Scene& scene, const Simulator& sim, RunResult& r) {
   r.strain_p99 = strain.p99;
   r.strain_over = strain.over;
   r.strain_max_where = describe_spring(sim, strain.max_spring);
+  r.cloth_crossings_where = describe_cloth_crossings(sim.mesh(), springs, self);
   r.kinetic_energy = sim.kinetic_energy();
 }
 

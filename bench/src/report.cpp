@@ -223,6 +223,7 @@ void add_accuracy_fields(const RunResult& r, nlohmann::json& row) {
   row["crossings_pct"] = r.accuracy.crossings_pct;
   row["structural_springs"] = r.accuracy.segments;
   row["faces_inside_pct"] = r.accuracy.faces_inside_pct;
+  row["cloth_crossings_pct"] = r.accuracy.cloth_crossings_pct;
   row["oracle_depth_ms"] = r.accuracy.depth_ms;
   row["oracle_crossings_ms"] = r.accuracy.crossings_ms;
   row["seam_gap_max_mm"] = r.seam_gap_max_mm;
@@ -230,6 +231,7 @@ void add_accuracy_fields(const RunResult& r, nlohmann::json& row) {
   row["strain_p99"] = r.strain_p99;
   row["strain_over"] = r.strain_over;
   row["strain_max_where"] = r.strain_max_where;
+  row["cloth_crossings_where"] = r.cloth_crossings_where;
   row["kinetic_energy_j"] = r.kinetic_energy;
   if (r.frame_samples.empty()) return;
   row["frames_measured"] = r.frame_samples.size();
@@ -238,6 +240,7 @@ void add_accuracy_fields(const RunResult& r, nlohmann::json& row) {
   row["worst_frame_depth_max_mm"] = r.frame_max(&FrameSample::depth_max_mm);
   row["worst_frame_crossings_pct"] = r.frame_max(&FrameSample::crossings_pct);
   row["mean_frame_crossings_pct"] = r.frame_mean(&FrameSample::crossings_pct);
+  row["worst_frame_cloth_crossings_pct"] = r.frame_max(&FrameSample::cloth_crossings_pct);
   row["worst_frame_strain_max"] = r.frame_max(&FrameSample::strain_max);
   row["depth_max_where"] = r.depth_max_where;
 }

@@ -30,6 +30,7 @@ void accuracy_fields(J& j, A& a, F&& f) {
   f(j, "segments", a.segments), f(j, "crossings", a.crossings), f(j, "crossings_pct", a.crossings_pct);
   f(j, "faces", a.faces), f(j, "faces_inside", a.faces_inside), f(j, "faces_inside_pct", a.faces_inside_pct);
   f(j, "depth_ms", a.depth_ms), f(j, "crossings_ms", a.crossings_ms);
+  f(j, "cloth_crossings", a.cloth_crossings), f(j, "cloth_crossings_pct", a.cloth_crossings_pct);
 }
 
 template <typename J, typename R, typename F>
@@ -47,6 +48,7 @@ void run_fields(J& j, R& r, F&& f) {
   f(j, "threads", r.threads), f(j, "prepared_frames", r.prepared_frames), f(j, "seam_gap_max_mm", r.seam_gap_max_mm);
   f(j, "strain_max", r.strain_max);
   f(j, "strain_p99", r.strain_p99), f(j, "strain_over", r.strain_over), f(j, "strain_max_where", r.strain_max_where);
+  f(j, "cloth_crossings_where", r.cloth_crossings_where);
   f(j, "seam_gap_where", r.seam_gap_where);
   f(j, "depth_max_where", r.depth_max_where);
   f(j, "kinetic_energy", r.kinetic_energy), f(j, "animate_strain_max", r.animate_strain_max);
@@ -54,10 +56,10 @@ void run_fields(J& j, R& r, F&& f) {
   f(j, "converged", r.converged), f(j, "window_seam_gap_mm", r.window_seam_gap_mm);
 }
 
-// frame samples as rows [t_s, inside_pct, depth_max_mm, crossings_pct, strain_max, strain_p99]
+// frame samples as rows [t_s, inside_pct, depth_max_mm, crossings_pct, strain_max, strain_p99, cloth_crossings_pct]
 nlohmann::json frames_json(const std::vector<FrameSample>& samples) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const FrameSample& s : samples) rows.push_back({s.t_s, s.inside_pct, s.depth_max_mm, s.crossings_pct, s.strain_max, s.strain_p99});
+  for (const FrameSample& s : samples) rows.push_back({s.t_s, s.inside_pct, s.depth_max_mm, s.crossings_pct, s.strain_max, s.strain_p99, s.cloth_crossings_pct});
   return rows;
 }
 
@@ -65,7 +67,8 @@ std::vector<FrameSample> frames_from_json(const nlohmann::json& rows) {
   std::vector<FrameSample> samples;
   for (const auto& row : rows)
     samples.push_back({row.at(0).get<double>(), row.at(1).get<double>(), row.at(2).get<double>(),
-                       row.at(3).get<double>(), row.at(4).get<double>(), row.at(5).get<double>()});
+                       row.at(3).get<double>(), row.at(4).get<double>(), row.at(5).get<double>(),
+                       row.at(6).get<double>()});
   return samples;
 }
 

@@ -106,14 +106,18 @@ void print_summary(const RunArgs& a, const RunResult& r) {
       "seam gap %.2f mm; strain max %.1f %%, p99 %.1f %%, %.2f %% of the springs over the limit\n",
       r.accuracy.inside_pct, r.accuracy.depth_max_mm, r.accuracy.depth_p95_mm, r.accuracy.crossings,
       r.accuracy.crossings_pct, r.seam_gap_max_mm, 100 * r.strain_max, 100 * r.strain_p99, 100 * r.strain_over);
+  std::printf("  cloth through itself: %zu structural springs (%.2f %%) through a triangle of the cloth%s%s\n",
+              r.accuracy.cloth_crossings, r.accuracy.cloth_crossings_pct,
+              r.cloth_crossings_where.empty() ? "" : "; panels: ", r.cloth_crossings_where.c_str());
   if (r.frames > 0)
     std::printf("  seam gap when the measured window starts %.2f mm\n", r.window_seam_gap_mm);
   if (r.frames > 0 && a.every_frame)
     std::printf(
-        "  worst frame: %.2f %% inside, depth max %.2f mm, crossings %.2f %%; strain max %.1f %% "
-        "(mean over %zu frames: %.2f %% inside, crossings %.2f %%)\n",
+        "  worst frame: %.2f %% inside, depth max %.2f mm, crossings %.2f %%; strain max %.1f %%; cloth through "
+        "itself %.2f %% (mean over %zu frames: %.2f %% inside, crossings %.2f %%)\n",
         r.frame_max(&FrameSample::inside_pct), r.frame_max(&FrameSample::depth_max_mm),
-        r.frame_max(&FrameSample::crossings_pct), 100 * r.animate_strain_max, r.frame_samples.size(),
+        r.frame_max(&FrameSample::crossings_pct), 100 * r.animate_strain_max,
+        r.frame_max(&FrameSample::cloth_crossings_pct), r.frame_samples.size(),
         r.frame_mean(&FrameSample::inside_pct), r.frame_mean(&FrameSample::crossings_pct));
   else if (r.frames > 0)
     std::printf("  worst frame: strain max %.1f %% (--every-frame measures inside, depth and crossings too)\n",

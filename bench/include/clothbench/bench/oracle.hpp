@@ -37,6 +37,8 @@ struct Accuracy {
   double faces_inside_pct = 0;   ///< faces_inside / faces [%]; 0 when none were tested
   double depth_ms = 0;           ///< cost of the signed-distance query of measure() [ms]
   double crossings_ms = 0;       ///< cost of the segment query of measure_crossings() [ms]
+  std::size_t cloth_crossings = 0;  ///< structural springs through a triangle of the cloth itself (cloth_crossings.hpp)
+  double cloth_crossings_pct = 0;   ///< cloth_crossings / segments [%]
 };
 
 /// The structural springs of a cloth (2 x ns_structural vertex indices): the segments whose

@@ -36,6 +36,7 @@ struct FrameSample {
   double inside_pct = 0, depth_max_mm = 0, crossings_pct = 0;
   double strain_max = 0;       ///< largest structural strain, fraction
   double strain_p99 = 0;       ///< 99th percentile of the structural strains, fraction
+  double cloth_crossings_pct = 0;  ///< structural springs through the cloth itself [%] (cloth_crossings.hpp)
 };
 
 /// What a run measured. Times in ms unless named otherwise.
@@ -73,6 +74,7 @@ struct RunResult {
   double strain_max = 0, strain_p99 = 0;
   double strain_over = 0;       ///< share of the structural springs over threshold + 1 %, fraction
   std::string strain_max_where; ///< the most strained structural spring: its ends, height, contacts, seams
+  std::string cloth_crossings_where;  ///< the panels of the springs through the cloth and of the triangles they pass (end)
   std::string seam_gap_where;   ///< the widest opening along the seams: its vertices and panels ("" when closed)
   std::string depth_max_where;  ///< the deepest point inside the body: of the deepest measured frame (where, when,
                                 ///< contact), or of the end state when that is deeper ("" when none is inside)

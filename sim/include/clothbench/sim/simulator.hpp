@@ -197,6 +197,8 @@ class Simulator {
   Real seam_pair_gap_max() const;
   /// Share of seam pairs merged, 0..1.
   Real sewn_fraction() const;
+  /// The vertices joined by merged seam pairs, a group each: one point of the cloth.
+  const std::vector<std::vector<int>>& sewn_points() const { return merged_groups_; }
   StrainStats strain() const;
   /// Largest vertex speed [m/s] and kinetic energy [J].
   Real max_speed() const;
