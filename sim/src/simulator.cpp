@@ -230,6 +230,7 @@ bool Simulator::step() {
   double cs_ms = cs.ms();
   cdr.restart();
   respond();
+  if (params_.self_contact > 0) self_.respond(mesh_, merged_groups_, x_, v_, inv_m_, params_.self_contact);
   cdr_ms += cdr.ms();
   cs.restart();
   // the limit again, each pass followed by the contacts' non-penetration: the body stops the cloth's motion

@@ -44,6 +44,8 @@ void visit_fields(P& p, V& v) {
   v(Key{"limit_after_response", "", "limit again after the collision response"}, p.limit_after_response, Flag{});
   v(Key{"push_out", "", "vertices inside the body moved to its surface"}, p.push_out, Flag{});
   v(Key{"push_speed", "m/s", "push_out's largest speed"}, p.push_speed, Range{1e-3, 100});
+  v(Key{"self_contact_mm", "mm", "cloth against itself: the thickness (0: off)", Hash::kWhenNonzero}, p.self_contact,
+    fields::Scaled{0, 100, 1e-3, 1e3});
   v(Key{"limit", "", "the strain limiter (limiter_names())"}, p.limit, fields::checked(check_limiter));
   v(Key{"threshold", "", "elongation threshold of the limit (fraction)"}, p.threshold, Range{1e-4, 1});
   v(Key{"stiff_factor", "", "the stiff limit's stiffness factor"}, p.stiff_factor, Range{1, 1e4});

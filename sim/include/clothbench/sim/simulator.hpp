@@ -12,6 +12,7 @@
 #include "clothbench/sim/collider.hpp"
 #include "clothbench/sim/integrator.hpp"
 #include "clothbench/sim/limiter.hpp"
+#include "clothbench/sim/self_contact.hpp"
 
 namespace clothbench {
 
@@ -85,6 +86,7 @@ struct SolverParams {
   bool face_queries = false;             ///< also query quad midpoints (dressing section 6)
   bool push_out = true;                  ///< vertices found inside the body are moved to its surface (Durupinar Eq. 3)
   Real push_speed = 2.f;                 ///< push_out moves a vertex no faster than this [m/s]
+  Real self_contact = 0;                 ///< cloth against itself: points nearer a triangle than this [m] are stopped (0: off)
   bool reaction_force = false;           ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
@@ -245,6 +247,7 @@ class Simulator {
   Points3 attach_bary_;               // (3 x na)
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
+  SelfContacts self_;                            // cloth against itself (SolverParams::self_contact)
   Box3 start_box_;
   Collider* collider_ = nullptr;
   Phase phase_ = Phase::kDrape;

@@ -1,0 +1,20 @@
+#include "clothbench/sim/triangle_grid.hpp"
+
+namespace clothbench {
+
+void TriangleGrid::build(PointsView points, const std::vector<Triangle>& triangles, double cell) {
+  cell_ = cell;
+  entries_.clear();
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    Vec3 lo = points[std::size_t(triangles[t][0])], hi = lo;
+    for (int k = 1; k < 3; ++k)
+      lo = lo.cwiseMin(points[std::size_t(triangles[t][k])]), hi = hi.cwiseMax(points[std::size_t(triangles[t][k])]);
+    const Cell a = cell_of(lo), b = cell_of(hi);
+    for (long x = a[0]; x <= b[0]; ++x)
+      for (long y = a[1]; y <= b[1]; ++y)
+        for (long z = a[2]; z <= b[2]; ++z) entries_.emplace_back(key(x, y, z), static_cast<int>(t));
+  }
+  std::sort(entries_.begin(), entries_.end());
+}
+
+}  // namespace clothbench
