@@ -248,26 +248,36 @@ TEST(Limiters, ImpulsesHoldATautStripInTheStableRegime) {
     }
 }
 
+// one quad, a square of 0.1 m in the plane y = 0, whose midpoint (not its corners) the body below touches
+struct QuadOnTheBody {
+  ClothMesh c;
+  Points3 x{3, 4}, v{3, 4};
+  Scalars m = Scalars::Constant(4, 0.01f), inv_m = Scalars::Constant(4, 100);
+  std::vector<Contact> contacts = std::vector<Contact>(5);  // the four vertices, then the quad's midpoint
+  QuadOnTheBody() {
+    c.positions.resize(3, 4);
+    c.springs.resize(2, 4);
+    c.springs << 0, 1, 2, 3, 1, 2, 3, 0;
+    c.kind.assign(4, SpringKind::kStructural);
+    c.rest_length = Scalars::Constant(4, 0.1f);
+    c.quads.resize(4, 1);
+    c.quads << 0, 1, 2, 3;
+    x << 0, 0.1f, 0.1f, 0, 0, 0, 0, 0, 0, 0, 0.1f, 0.1f;
+    contacts[4].hit = true;
+    contacts[4].normal = Vec3(0, 1, 0);
+  }
+  LimitState state(const std::vector<std::vector<int>>& merged) {
+    return {c, x, v, m, inv_m, contacts, merged, Vec3(0, -9.81f, 0), 0.001f};
+  }
+};
+
 // with face queries the body's contacts are quad midpoints too (dressing section 6): `impulses` stops a midpoint's
 // motion into the body although none of its corners touches, with one push shared by the corners
 TEST(Limiters, ImpulsesStopAQuadMidpointMovingIntoTheBody) {
-  ClothMesh c;
-  c.positions.resize(3, 4);
-  c.springs.resize(2, 4);
-  c.springs << 0, 1, 2, 3, 1, 2, 3, 0;
-  c.kind.assign(4, SpringKind::kStructural);
-  c.rest_length = Scalars::Constant(4, 0.1f);
-  c.quads.resize(4, 1);
-  c.quads << 0, 1, 2, 3;
-  Points3 x(3, 4), v(3, 4);
-  x << 0, 0.1f, 0.1f, 0, 0, 0, 0, 0, 0, 0, 0.1f, 0.1f;  // a square in the plane y = 0
-  const Scalars m = Scalars::Constant(4, 0.01f);
-  const Scalars inv_m = Scalars::Constant(4, 100);
-  std::vector<Contact> contacts(5);  // the four vertices, then the quad's midpoint
-  contacts[4].hit = true;
-  contacts[4].normal = Vec3(0, 1, 0);
+  QuadOnTheBody q;
+  Points3& v = q.v;
   const std::vector<std::vector<int>> merged;
-  LimitState s{c, x, v, m, inv_m, contacts, merged, Vec3(0, -9.81f, 0), 0.001f};
+  LimitState s = q.state(merged);
   const auto down = [&] {
     v.setZero();
     v.row(1).setConstant(-1);  // every corner down, into the body below the midpoint
@@ -282,7 +292,7 @@ TEST(Limiters, ImpulsesStopAQuadMidpointMovingIntoTheBody) {
     EXPECT_FLOAT_EQ(v(0, 0), -0.5f) << after_response;
     for (int k = 1; k < 4; ++k) EXPECT_FLOAT_EQ(v(1, k), v(1, 0)) << after_response;  // one push, a quarter each
   }
-  contacts[4].hit = false;  // no contact: nothing stops the corners
+  q.contacts[4].hit = false;  // no contact: nothing stops the corners
   v.setZero();
   v.row(1).setConstant(-1);
   make_limiter("impulses", {0.1f, 4})->limit_velocities(s, false);
@@ -292,24 +302,11 @@ TEST(Limiters, ImpulsesStopAQuadMidpointMovingIntoTheBody) {
 // the sweeps stop the motion into the body after the response (their second call) of a quad midpoint in contact
 // too, as of a vertex: one push, a quarter to each corner, sewn corners moving as one point
 TEST(Limiters, SweepsStopAQuadMidpointMovingIntoTheBodyAfterTheResponse) {
-  ClothMesh c;
-  c.positions.resize(3, 4);
-  c.springs.resize(2, 4);
-  c.springs << 0, 1, 2, 3, 1, 2, 3, 0;
-  c.kind.assign(4, SpringKind::kStructural);
-  c.rest_length = Scalars::Constant(4, 0.1f);
-  c.quads.resize(4, 1);
-  c.quads << 0, 1, 2, 3;
-  Points3 x(3, 4), v(3, 4);
-  x << 0, 0.1f, 0.1f, 0, 0, 0, 0, 0, 0, 0, 0.1f, 0.1f;  // a square in the plane y = 0
-  const Scalars m = Scalars::Constant(4, 0.01f);
-  const Scalars inv_m = Scalars::Constant(4, 100);
-  std::vector<Contact> contacts(5);  // the four vertices, then the quad's midpoint
-  contacts[4].hit = true;
-  contacts[4].normal = Vec3(0, 1, 0);
+  QuadOnTheBody q;
+  Points3& v = q.v;
   for (const char* name : {"velocity", "directional", "velocity-zero"})
     for (const std::vector<std::vector<int>>& merged : {std::vector<std::vector<int>>{}, {{0, 3}}}) {
-      LimitState s{c, x, v, m, inv_m, contacts, merged, Vec3(0, -9.81f, 0), 0.001f};
+      LimitState s = q.state(merged);
       v.setZero();
       v.row(1) << -1, -2, -1, -1;  // every corner into the body below the midpoint
       v(2, 1) = 0.5f;              // and one along it, which the body does not stop
