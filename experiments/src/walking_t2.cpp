@@ -212,6 +212,14 @@ std::vector<WalkVariant> response_variants() {
                is_cpu});
   v.push_back(
       {"stable, travelling", "walk_07_01", "stable", "/travel", {"body.walk_in_place=false"}, {"is-cpu", "embree"}});
+  // beyond the papers: the cloth against itself answered (solver.self_contact_mm), on both clips
+  for (const char* clip : {"walk_07_01", "walk_08_02"})
+    v.push_back({"stable, cloth against itself (5 mm)",
+                 clip,
+                 "stable",
+                 std::string("/self-contact/") + clip,
+                 {"solver.self_contact_mm=5", std::string("body.animation=") + clip},
+                 is_cpu});
   return v;
 }
 
@@ -476,8 +484,10 @@ std::string body_description(double proxy_mm) {
          "with fewer triangles (edge collapses that keep some of its own vertices and their skin; every exact vertex "
          "within " +
          num(proxy_mm, 1) +
-         " mm of the copy) while the oracle measures against the exact body. And "
-         "\"travelling\" keeps the root's motion (the maps follow the body).\n\n";
+         " mm of the copy) while the oracle measures against the exact body. \"Travelling\" keeps the root's motion "
+         "(the maps follow the body). And \"cloth against itself\" stops a point of the garment moving into a "
+         "triangle of the garment nearer than the thickness (`solver.self_contact_mm`, Bridson, Fedkiw and Anderson "
+         "2002, beyond the papers; scenes/README.md): its column \"cloth through itself\" beside the others'.\n\n";
 }
 
 std::string description(const WalkPage& page) {
