@@ -98,10 +98,11 @@ inline ExperimentContext::Request t1_request(const ExperimentContext& ctx, const
   return {g.scene, v.collider, with_quick(ctx, v.with(sets))};
 }
 
+// `at_least`: runs of it (ExperimentContext::run)
 inline const RunResult& t1_run(ExperimentContext& ctx, const T1Garment& g, const Variant& v,
-                               const std::string& regime = "stable") {
+                               const std::string& regime = "stable", int at_least = 1) {
   const ExperimentContext::Request q = t1_request(ctx, g, v, regime);
-  return ctx.run(q.scene, q.collider, q.sets);
+  return ctx.run(q.scene, q.collider, q.sets, {}, at_least);
 }
 
 // every collider, and once more with our defaults ("ours") those whose default departs from the papers' (image
@@ -193,6 +194,36 @@ inline SummaryPair summary_pair(const ExperimentContext& ctx) {
   const auto is = lead_first(kLeadImageSpace, ctx.colliders(in_tables(Family::kImageSpace)));
   const auto os = lead_first(kLeadObjectSpace, ctx.colliders(in_tables(Family::kObjectSpace)));
   return {is.empty() ? "" : is.front(), os.empty() ? "" : os.front()};
+}
+
+// the runs of each of the summary pair's rows at the papers' clock: their timing verdicts rest on five at least
+constexpr int kVerdictRuns = 5;
+// the summary pair's rows of every garment at the papers' clock, run kVerdictRuns times (once in --quick); before
+// the table, so that its rows and the JSON's hold every run
+inline void run_verdict_rows(ExperimentContext& ctx) {
+  const SummaryPair c = summary_pair(ctx);
+  if (!c.ok()) return;
+  for (const auto& g : kT1)
+    for (const auto& collider : {c.is, c.os}) t1_run(ctx, g, {collider}, "papers", ctx.quick() ? 1 : kVerdictRuns);
+}
+
+// a run's collision time per iteration [ms] over every run of its configuration: median, least and most
+struct Spread {
+  double median, lo, hi;
+  std::size_t runs;
+};
+inline Spread cdr_spread(const ExperimentContext& ctx, const RunResult& r) {
+  std::vector<double> ms;
+  for (const RunResult* each : ctx.repetitions_of(r)) ms.push_back(each->cdr_ms_per_iteration());
+  std::sort(ms.begin(), ms.end());
+  return {ms[ms.size() / 2], ms.front(), ms.back(), ms.size()};
+}
+// "0.18 ms (0.17-0.19, 5 runs)" or "0.18 ms (one run)"
+inline std::string spread_text(const Spread& s, int digits) {
+  return num(s.median, digits) + " ms (" +
+         (s.runs > 1 ? num(s.lo, digits) + "-" + num(s.hi, digits) + ", " + std::to_string(s.runs) + " runs"
+                     : std::string("one run")) +
+         ")";
 }
 
 }  // namespace clothbench::paper_tables
