@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
+#include <vector>
+
 namespace clothbench {
 namespace {
 
@@ -56,6 +60,29 @@ TEST(SelfContact, AwayFartherOrAtItsOwnPointNothingChanges) {
   s.mesh.seam_pairs << 4, 2;
   EXPECT_EQ(contacts.respond(s.mesh, {}, s.x, s.v, s.inv_m, 0.005f), 0);
   EXPECT_FLOAT_EQ(s.v(1, 4), -1);
+}
+
+// the grid finds a triangle torn across the space or with a non-finite corner (kept beside the grid) from any box,
+// visits every triangle for a box over the whole space, and a small box only the triangles of its cells
+TEST(TriangleGrid, TornAndNonFiniteTrianglesAreFoundAndHugeBoxesVisitEverything) {
+  Points3 x(3, 8);
+  x.col(0) = Vec3(0, 0, 0), x.col(1) = Vec3(0.01f, 0, 0), x.col(2) = Vec3(0, 0.01f, 0);
+  x.col(3) = Vec3(1e6f, 0, 0), x.col(4) = Vec3(0, 0, std::numeric_limits<Real>::quiet_NaN());
+  x.col(5) = Vec3(0.5f, 0.5f, 0.5f), x.col(6) = Vec3(0.51f, 0.5f, 0.5f), x.col(7) = Vec3(0.5f, 0.51f, 0.5f);
+  // a small one at the origin, one a thousand kilometres long, one with a NaN corner, a small one at (0.5, 0.5, 0.5)
+  const std::vector<TriangleGrid::Triangle> triangles{{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {5, 6, 7}};
+  TriangleGrid grid;
+  grid.build(x, triangles, 0.02);
+  const auto found = [&](const Vec3& lo, const Vec3& hi) {
+    std::vector<int> out;
+    grid.near(lo, hi, [&](int t) { out.push_back(t); });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  };
+  EXPECT_EQ(found(Vec3::Constant(-0.001f), Vec3::Constant(0.001f)), (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(found(Vec3(0.49f, 0.49f, 0.49f), Vec3(0.52f, 0.51f, 0.51f)), (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(found(Vec3::Constant(-1e9f), Vec3::Constant(1e9f)), (std::vector<int>{0, 1, 2, 3}));
 }
 
 }  // namespace
