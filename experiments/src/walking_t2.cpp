@@ -349,9 +349,10 @@ const RunResult& median_rate_run(const ExperimentContext& ctx, const RunResult& 
 
 // the dress's rows on walk_07_01 within every limit at every frame whose one run reaches kContender of the fastest
 // such row's rate, of any collider or of the speed paragraph's is-cpu rows, run kHeadlineRuns times: the headlines
-// are chosen among them by their median
+// are chosen among them by their median (--quick: the code paths once, no repetitions)
 constexpr double kContender = 0.75;
 void repeat_contenders(ExperimentContext& ctx, const std::vector<WalkRun>& runs) {
+  if (ctx.quick()) return;
   const auto rate = [&](const WalkRun& w) {
     const RunResult& r = ctx.run(w.scene, w.collider, w.sets);
     const bool within = w.garment == 1 && w.variant.clip == "walk_07_01" && r.frames && !r.divergence && dressed(r) &&
