@@ -7,6 +7,7 @@
 #include "clothbench/bench/report.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
+#include "clothbench/experiments/statistics.hpp"
 #include "experiment_list.hpp"
 
 namespace clothbench {
@@ -128,16 +129,36 @@ std::string sew_speed_sweep(ExperimentContext& ctx, const std::vector<Garment>& 
          t.str();
 }
 
-// per garment: the quickest row to dressed within every limit, and the quickest of all with what it misses
+// a run's wall time to dressed [s], one thread, the collider's set-up included
+double wall_to_dressed_s(const RunResult& r) { return r.setup_ms / 1e3 + r.total_s(); }
+
+// the wall times to dressed of every run of the request that returned r
+Spread wall_spread(const ExperimentContext& ctx, const RunResult& r) {
+  std::vector<double> s;
+  for (const RunResult* each : ctx.repetitions_of(r)) s.push_back(wall_to_dressed_s(*each));
+  return spread(s);
+}
+
+// "0.340" or "0.340 (median of 5 runs, 0.312-0.371)"
+std::string wall_text(const Spread& s) { return num(s.median, 3) + (s.runs > 1 ? " (" + runs_text(s, 3) + ")" : ""); }
+
+// per garment: the quickest row to dressed within every limit (by its runs' median), and the quickest of all with
+// what it misses
 struct Quickest {
   std::string within, any;
-  double within_s = 0, any_s = 0;
-  void offer(const std::string& label, double wall_s, const RunResult& r) {
+  Spread within_s, any_s;
+  void offer(const std::string& label, const Spread& wall, const RunResult& r) {
     if (r.divergence) return;
-    if (limit_misses(r).empty() && (within.empty() || wall_s < within_s)) within = label, within_s = wall_s;
-    if (any.empty() || wall_s < any_s) any = label + ", " + limits_cell(r), any_s = wall_s;
+    if (limit_misses(r).empty() && (within.empty() || wall.median < within_s.median)) within = label, within_s = wall;
+    if (any.empty() || wall.median < any_s.median) any = label + ", " + limits_cell(r), any_s = wall;
   }
 };
+
+// the rows within every limit whose one run took at most 1 / kContender of the quickest such row's wall time (per
+// garment) run kVerdictRuns times: the summary's quickest and the targets' verdict are chosen by their median
+// (--quick: no repetitions)
+constexpr double kContender = 0.75;
+constexpr int kVerdictRuns = 5;
 
 // the page's opening lines: the papers' counts, our quickest dressing within every limit, the verdict
 std::vector<std::string> summary(const std::vector<Garment>& garments, const std::vector<Quickest>& quickest) {
@@ -146,23 +167,28 @@ std::vector<std::string> summary(const std::vector<Garment>& garments, const std
       "modification; image space sews the shirt in " +
       std::to_string(garments[0].paper_iterations) + " iterations and the dress in " +
       std::to_string(garments[1].paper_iterations) + " (dressing Table 1)."};
-  std::string within =
-                  "Ours, the quickest to dressed within every limit, strain included (one run each, set-up "
-                  "included):",
-              any = "The quickest of all rows and what it misses:";
+  std::string
+      within =
+          "Ours, the quickest to dressed within every limit, strain included (set-up included; the rows near the "
+          "quickest run " +
+          std::to_string(kVerdictRuns) + " times, the others once):",
+      any = "The quickest of all rows and what it misses:";
   for (std::size_t i = 0; i < garments.size(); ++i) {
     const Quickest& q = quickest[i];
-    within += std::string(i ? ";" : "") + " " + garments[i].product + " " +
-              (q.within.empty() ? std::string("none") : num(q.within_s, 3) + " s (" + q.within + ")");
-    any += std::string(i ? ";" : "") + " " + garments[i].product + " " + num(q.any_s, 3) + " s (" + q.any + ")";
+    within +=
+        std::string(i ? ";" : "") + " " + garments[i].product + " " +
+        (q.within.empty() ? std::string("none")
+                          : num(q.within_s.median, 3) + " s (" + q.within + "; " + runs_text(q.within_s, 3) + ")");
+    any += std::string(i ? ";" : "") + " " + garments[i].product + " " + num(q.any_s.median, 3) + " s (" + q.any +
+           "; " + runs_text(q.any_s, 3) + ")";
   }
   lines.push_back(within + ".");
   lines.push_back(any + ".");
   const auto target = [&](std::size_t i, double s) {
     const Quickest& q = quickest[i];
     return std::string(garments[i].product) + " " +
-           (q.within.empty() ? "none within the limits" : num(q.within_s, 3) + " s") + " against " + num(s, 1) +
-           " s: " + (!q.within.empty() && q.within_s <= s ? "met" : "not met");
+           (q.within.empty() ? "none within the limits" : num(q.within_s.median, 3) + " s") + " against " + num(s, 1) +
+           " s: " + (!q.within.empty() && q.within_s.median <= s ? "met" : "not met");
   };
   lines.push_back("Verdict, the targets for dressing within every limit on one thread: " + target(0, 0.1) + "; " +
                   target(1, 0.3) + ".");
@@ -196,14 +222,14 @@ MarkdownTable integrators_table() {
 
 // one row of the table: what ran, then its outcome (a diverged run has no accuracy)
 std::vector<std::string> row_cells(const Garment& g, const Solver& s, const std::string& collider, const RunResult& r,
-                                   double wall_s) {
+                                   const Spread& wall) {
   const long its = r.sew.iterations + r.drape.iterations;
   std::vector<std::string> cells{
       g.product, s.integrator, regime_label(s), collider, std::to_string(r.vertices), num(1e3 * r.dt_s, 3)};
   const auto add = [&](std::initializer_list<std::string> more) { cells.insert(cells.end(), more); };
   if (r.divergence) {
     add({"diverged at " + std::to_string(r.divergence->iteration), std::to_string(g.paper_iterations), "-", "-", "-",
-         num(wall_s, 3), num(r.ms_per_iteration(), 3)});
+         wall_text(wall), num(r.ms_per_iteration(), 3)});
     cells.resize(cells.size() + 7, "-");  // inside, depth, crossings, seam gap, strain, over, where
     add({"no: diverged"});
     return cells;
@@ -211,7 +237,7 @@ std::vector<std::string> row_cells(const Garment& g, const Solver& s, const std:
   add({std::to_string(r.sew.iterations) + " + " + std::to_string(r.drape.iterations),
        std::to_string(g.paper_iterations),
        num(double(r.sew.iterations) / g.paper_iterations, 1) + "; " + num(double(its) / g.paper_iterations, 1),
-       r.sew.reached ? "yes" : "no", r.drape.reached ? "yes" : "no", num(wall_s, 3),
+       r.sew.reached ? "yes" : "no", r.drape.reached ? "yes" : "no", wall_text(wall),
        num(r.ms_per_iteration(), 3) + " (" + num(r.cdr_ms_per_iteration(), 3) + " + " +
            num(r.cs_ms_per_iteration(), 3) + "; " + num(r.limit_ms_per_iteration(), 3) + ")",
        num(r.accuracy.inside_pct, 2), num(r.accuracy.depth_max_mm, 1), num(r.accuracy.crossings_pct, 2),
@@ -234,9 +260,13 @@ std::string description() {
          "stable regime's limit is `impulses` (walking Eq. 5 as accumulated impulses warm-started from the last step, "
          "after "
          "Catto 2005), 1 pass, run again after the collision response. "
-         "Wall time is one thread, collider set-up "
-         "included, until sewn and "
-         "settled or the phase budgets (1 s + 2 s simulated) run out. The papers' iteration counts are their "
+         "Wall time is one thread, collider set-up included, until sewn and settled or the phase budgets (1 s + 2 s "
+         "simulated) run out. A row within every limit whose one run came within a factor " +
+         num(1 / kContender, 2) + " of the quickest such row of its garment runs " + std::to_string(kVerdictRuns) +
+         " times: its wall time is the median of the runs with their range (the summary and the targets' verdict "
+         "judge the median), its other timings the run with the median ms/iteration; every other row is one run. "
+         "Runs are deterministic, so the repetitions differ in their times only. The papers' iteration counts are "
+         "their "
          "image-space rows (dressing Table 1 for shirt and dress, Table 2 for the skirt at 336 vertices and the "
          "trousers at 560, here 600, which does not state dt); Table 1's are counts \"to sew a shirt and a dress\" "
          "(dressing section 7), so ours/paper gives the sewing phase's ratio first and the whole run's (sew and drape "
@@ -250,6 +280,33 @@ std::string description() {
          "the strain limit.\n\n";
 }
 
+// one row of the table: a garment (index into the page's list), a solver and a collider
+struct Row {
+  std::size_t garment;
+  const Solver* solver;
+  std::string collider;
+};
+
+// the rows within every limit near the quickest such row of their garment run kVerdictRuns times (kContender)
+void repeat_contenders(ExperimentContext& ctx, const std::vector<Garment>& garments, const std::vector<Row>& rows) {
+  if (ctx.quick()) return;
+  const auto wall_within = [&](const Row& w) {
+    const RunResult& r = ctx.run(garments[w.garment].scene, w.collider, overrides(ctx, garments[w.garment], *w.solver));
+    return !r.divergence && limit_misses(r).empty() ? wall_to_dressed_s(r) : -1.0;
+  };
+  std::vector<double> quickest(garments.size(), -1);
+  for (const Row& w : rows) {
+    const double s = wall_within(w);
+    double& q = quickest[w.garment];
+    if (s >= 0 && (q < 0 || s < q)) q = s;
+  }
+  for (const Row& w : rows) {
+    const double s = wall_within(w);
+    if (s >= 0 && kContender * s <= quickest[w.garment])
+      ctx.run(garments[w.garment].scene, w.collider, overrides(ctx, garments[w.garment], *w.solver), {}, kVerdictRuns);
+  }
+}
+
 void integrators(ExperimentContext& ctx) {
   const std::vector<Garment> garments = {{"shirt", "dressing/shirt.toml", 1800, paper::kDressingT1[0].iterations},
                                          {"dress", "dressing/dress.toml", 3840, paper::kDressingT1[2].iterations},
@@ -260,37 +317,44 @@ void integrators(ExperimentContext& ctx) {
   const Solver solvers[] = {
       {"explicit-euler", "stable"},       {"explicit-euler", "papers"}, {"explicit-euler", "papers", false, 4},
       {"implicit-euler", "stable", true}, {"rk45", "stable"},           {"projective", "stable", false, 0, "1"}};
+  std::vector<Row> rows;
+  for (const Solver& s : solvers)
+    // one collider of each family, the lead ones: the solvers are compared, not the colliders
+    for (const std::string& collider : ctx.colliders({"is-cpu", "embree"}))
+      for (std::size_t gi = 0; gi < garments.size(); ++gi) rows.push_back({gi, &s, collider});
+  repeat_contenders(ctx, garments, rows);
   MarkdownTable t = integrators_table();
   nlohmann::json series = nlohmann::json::array();
   std::vector<Quickest> quickest(garments.size());
-  for (const Solver& s : solvers)
-    // one collider of each family, the lead ones: the solvers are compared, not the colliders
-    for (const std::string& collider : ctx.colliders({"is-cpu", "embree"})) {
-      std::vector<double> x, y;
-      for (std::size_t gi = 0; gi < garments.size(); ++gi) {
-        const Garment& g = garments[gi];
-        const RunResult& r = ctx.run(g.scene, collider, overrides(ctx, g, s));
-        const std::string label = std::string(s.integrator) + " / " + regime_label(s) + " / " + collider;
-        ctx.add_run(r, "integrators/" + std::string(g.product) + "/" + label);
-        const double wall_s = r.setup_ms / 1e3 + r.total_s();
-        quickest[gi].offer(label, wall_s, r);
-        t.row(row_cells(g, s, collider, r, wall_s));
-        if (r.divergence) continue;
-        x.push_back(wall_s);
-        y.push_back(100 * r.strain_p99);
-      }
-      series.push_back({{"label", std::string(s.integrator) + " " + regime_label(s) + " " + collider},
+  std::vector<double> x, y;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& w = rows[i];
+    const Garment& g = garments[w.garment];
+    const Solver& s = *w.solver;
+    const RunResult& r = ctx.run(g.scene, w.collider, overrides(ctx, g, s));
+    const std::string label = std::string(s.integrator) + " / " + regime_label(s) + " / " + w.collider;
+    ctx.add_run(r, "integrators/" + std::string(g.product) + "/" + label);
+    const Spread wall = wall_spread(ctx, r);
+    quickest[w.garment].offer(label, wall, r);
+    t.row(row_cells(g, s, w.collider, r, wall));
+    if (!r.divergence) x.push_back(wall.median), y.push_back(100 * r.strain_p99);
+    // a series per solver and collider: the garments' rows
+    if (w.garment + 1 == garments.size()) {
+      series.push_back({{"label", std::string(s.integrator) + " " + regime_label(s) + " " + w.collider},
                         {"x", x},
                         {"y", y},
                         {"style", "o"}});
+      x.clear(), y.clear();
     }
+  }
   const std::string sweep = step_sweep(ctx, garments[0], ctx.colliders({"is-cpu", "embree"})) + "\n\n" +
                             sew_speed_sweep(ctx, garments, ctx.colliders({"is-cpu", "embree"}).front());
-  ctx.chart("integrators", {{"title", "Dressing (shirt, dress, skirt, trousers): wall time against strain"},
-                            {"xlabel", "wall time to dressed and settled, set-up included [s]"},
-                            {"ylabel", "strain p99 at the end [%]"},
-                            {"logx", true},
-                            {"series", series}});
+  ctx.chart("integrators",
+            {{"title", "Dressing (shirt, dress, skirt, trousers): wall time against strain"},
+             {"xlabel", "wall time to dressed and settled, set-up included (median run where repeated) [s]"},
+             {"ylabel", "strain p99 at the end [%]"},
+             {"logx", true},
+             {"series", series}});
   ctx.write("integrators", "Integrators and the papers' clock",
             description() + t.str() + "\n![chart](integrators.png)\n\n" + sweep, summary(garments, quickest));
 }

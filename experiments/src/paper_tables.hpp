@@ -9,6 +9,7 @@
 #include "clothbench/bench/report.hpp"
 #include "clothbench/experiments/experiment.hpp"
 #include "clothbench/experiments/paper_figures.hpp"
+#include "clothbench/experiments/statistics.hpp"
 #include "clothbench/render/picture.hpp"
 
 namespace clothbench::paper_tables {
@@ -207,16 +208,11 @@ inline void run_verdict_rows(ExperimentContext& ctx) {
     for (const auto& collider : {c.is, c.os}) t1_run(ctx, g, {collider}, "papers", ctx.quick() ? 1 : kVerdictRuns);
 }
 
-// a run's collision time per iteration [ms] over every run of its configuration: median, least and most
-struct Spread {
-  double median, lo, hi;
-  std::size_t runs;
-};
+// a run's collision time per iteration [ms] over every run of its configuration
 inline Spread cdr_spread(const ExperimentContext& ctx, const RunResult& r) {
   std::vector<double> ms;
   for (const RunResult* each : ctx.repetitions_of(r)) ms.push_back(each->cdr_ms_per_iteration());
-  std::sort(ms.begin(), ms.end());
-  return {ms[ms.size() / 2], ms.front(), ms.back(), ms.size()};
+  return spread(ms);
 }
 // "0.18 ms (0.17-0.19, 5 runs)" or "0.18 ms (one run)"
 inline std::string spread_text(const Spread& s, int digits) {

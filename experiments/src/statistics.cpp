@@ -6,6 +6,7 @@
 #include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "clothbench/bench/report.hpp"
 
@@ -101,10 +102,21 @@ GrowthFit fit_growth(const std::vector<double>& x, const std::vector<double>& y,
   return f;
 }
 
+Spread spread(std::vector<double> v) {
+  if (v.empty()) return {};
+  std::sort(v.begin(), v.end());
+  return {v[v.size() / 2], v.front(), v.back(), v.size()};
+}
+
+std::string runs_text(const Spread& s, int digits) {
+  if (s.runs < 2) return "one run";
+  return "median of " + std::to_string(s.runs) + " runs, " + num(s.lo, digits) + "-" + num(s.hi, digits);
+}
+
 std::string median_range(std::vector<double> v, int digits) {
   if (v.empty()) return "-";
-  std::sort(v.begin(), v.end());
-  return num(v[v.size() / 2], digits) + " (" + num(v.front(), digits) + "-" + num(v.back(), digits) + ")";
+  const Spread s = spread(std::move(v));
+  return num(s.median, digits) + " (" + num(s.lo, digits) + "-" + num(s.hi, digits) + ")";
 }
 
 }  // namespace clothbench

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "clothbench/experiments/experiment.hpp"
+#include "clothbench/experiments/statistics.hpp"
 
 namespace clothbench {
 
@@ -19,11 +20,7 @@ FrameTimes frame_times(const RunResult& r) {
           (r.animate.cdr_ms + r.animate.cs_ms) / frames};
 }
 
-std::string FrameRates::text() const {
-  if (fps.size() < 2) return "one run";
-  const auto [lo, hi] = std::minmax_element(fps.begin(), fps.end());
-  return "median of " + std::to_string(fps.size()) + " runs, " + num(*lo, 1) + "-" + num(*hi, 1);
-}
+std::string FrameRates::text() const { return runs_text(spread(fps), 1); }
 
 namespace {
 

@@ -1,5 +1,6 @@
 #pragma once
 /// Statistics the experiments report beside their tables (timing statistics of runs: bench/timing_stats.hpp).
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,15 @@ struct GrowthFit {
 };
 GrowthFit fit_growth(const std::vector<double>& x, const std::vector<double>& y,
                      const std::vector<std::vector<double>>& runs);
+
+/// Repeated measurements of one thing: their median (of an even count, the upper middle value), least and most.
+struct Spread {
+  double median = 0, lo = 0, hi = 0;
+  std::size_t runs = 0;
+};
+Spread spread(std::vector<double> v);
+/// "median of 5 runs, 13.6-15.9" (`digits` decimals), or "one run" of a single measurement.
+std::string runs_text(const Spread& s, int digits);
 
 /// "median (min-max)" of the values, each with `digits` decimals (of an even count, the upper middle value).
 std::string median_range(std::vector<double> v, int digits);
