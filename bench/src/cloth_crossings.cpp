@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "clothbench/bench/oracle.hpp"
+#include "clothbench/sim/cloth.hpp"
 #include "clothbench/sim/timer.hpp"
 #include "clothbench/sim/triangle_grid.hpp"
 
@@ -38,11 +39,7 @@ ClothCrossings cloth_crossings(PointsView v, const Pairs& segments, const Quads&
                                const std::vector<std::vector<int>>& sewn) {
   const Stopwatch clock;
   ClothCrossings out;
-  std::vector<int> point(v.count);  // each vertex's point: its own index, or its sewn group's first vertex
-  for (std::size_t i = 0; i < v.count; ++i) point[i] = int(i);
-  for (const auto& group : sewn)
-    for (int i : group)
-      if (i >= 0 && std::size_t(i) < v.count) point[std::size_t(i)] = group.front();
+  const std::vector<int> point = sewn_point_of(v.count, sewn);
   std::vector<TriangleGrid::Triangle> triangles;
   std::vector<Eigen::Index> quad_of;  // beside triangles
   for (Eigen::Index q = 0; q < quads.cols(); ++q)

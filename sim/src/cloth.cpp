@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 namespace clothbench {
@@ -16,14 +17,13 @@ const char* to_string(SpringKind kind) {
   return "?";
 }
 
-int ClothMesh::count(SpringKind k) const {
-  return static_cast<int>(std::count(kind.begin(), kind.end(), k));
-}
+int ClothMesh::count(SpringKind k) const { return static_cast<int>(std::count(kind.begin(), kind.end(), k)); }
 
 Real ClothMesh::shortest(SpringKind k) const {
   Real shortest = 0;
   for (Eigen::Index s = 0; s < springs.cols(); ++s)
-    if (kind[static_cast<std::size_t>(s)] == k && (shortest == 0 || rest_length[s] < shortest)) shortest = rest_length[s];
+    if (kind[static_cast<std::size_t>(s)] == k && (shortest == 0 || rest_length[s] < shortest))
+      shortest = rest_length[s];
   return shortest;
 }
 
@@ -133,6 +133,15 @@ ClothMesh make_grid_cloth(int nx, int ny, Real spacing, const Vec3& origin, cons
   c.seam_pairs.resize(2, 0);
   c.seam_loose.resize(3, 0);
   return c;
+}
+
+std::vector<int> sewn_point_of(std::size_t vertex_count, const std::vector<std::vector<int>>& groups) {
+  std::vector<int> point(vertex_count);
+  std::iota(point.begin(), point.end(), 0);
+  for (const auto& group : groups)
+    for (int i : group)
+      if (i >= 0 && static_cast<std::size_t>(i) < vertex_count) point[static_cast<std::size_t>(i)] = group.front();
+  return point;
 }
 
 }  // namespace clothbench

@@ -34,4 +34,16 @@ void move_as_one(const std::vector<std::vector<int>>& groups, const Scalars& m, 
   }
 }
 
+// An impulse J at quad q's midpoint, J/4 to each corner, changes the midpoint's velocity by J times this. point(i):
+// the point vertex i moves as (corners of one sewn point move it together); w(i): the inverse mass of that point
+// (0: held).
+template <class Point, class InverseMass>
+Real quad_midpoint_inverse_mass(const Quads& quads, Eigen::Index q, Point&& point, InverseMass&& w) {
+  Real sum = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      if (point(quads(a, q)) == point(quads(b, q))) sum += w(quads(b, q));
+  return sum / 16;
+}
+
 }  // namespace clothbench

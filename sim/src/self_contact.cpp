@@ -2,7 +2,6 @@
 #include "clothbench/sim/self_contact.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 #include "clothbench/sim/mesh_query.hpp"
 
@@ -19,18 +18,18 @@ int root(std::vector<int>& parent, int i) {
 
 void SelfContacts::group_points(const ClothMesh& mesh, const std::vector<std::vector<int>>& sewn) {
   // one point: a sewn group, and a seam pair, whose partners must be free to meet
-  point_.resize(static_cast<std::size_t>(mesh.positions.cols()));
-  std::iota(point_.begin(), point_.end(), 0);
+  point_ = sewn_point_of(static_cast<std::size_t>(mesh.positions.cols()), sewn);
   const auto join = [&](int a, int b) { point_[std::size_t(root(point_, a))] = root(point_, b); };
-  for (const auto& group : sewn)
-    for (int i : group) join(i, group.front());
   for (Eigen::Index p = 0; p < mesh.seam_pairs.cols(); ++p) join(mesh.seam_pairs(0, p), mesh.seam_pairs(1, p));
   for (std::size_t i = 0; i < point_.size(); ++i) point_[i] = root(point_, int(i));
 }
 
 long SelfContacts::respond(const ClothMesh& mesh, const std::vector<std::vector<int>>& sewn, const Points3& x,
                            Points3& v, const Scalars& inv_m, Real thickness) {
-  group_points(mesh, sewn);
+  if (point_.size() != static_cast<std::size_t>(mesh.positions.cols()) || sewn != grouped_) {
+    group_points(mesh, sewn);  // only when seams have merged since
+    grouped_ = sewn;
+  }
   // the candidates, pairs within twice the thickness, are found again once a point has moved half a thickness
   // since they were: until then no other pair can have come within the thickness
   if (built_.cols() != x.cols() || !((x - built_).colwise().squaredNorm().maxCoeff() < 0.25f * thickness * thickness))

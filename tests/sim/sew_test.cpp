@@ -108,5 +108,10 @@ TEST(GarmentSewing, ImplicitSolvesHangAStrapFromItsSeamWithoutStretchingIt) {
   hang_strap("projective");
 }
 
+TEST(GarmentSewing, ASewnPointIsItsGroupsFirstMemberAndOutOfRangeMembersAreSkipped) {
+  const std::vector<int> point = sewn_point_of(6, {{1, 4}, {5, 2, 9}});
+  EXPECT_EQ(point, (std::vector<int>{0, 1, 5, 3, 1, 5}));
+}
+
 }  // namespace
 }  // namespace clothbench

@@ -82,17 +82,14 @@ void Impulses::build(const ClothMesh& mesh) {
 void Impulses::gather_points(const LimitState& s) {
   // a sewn point is one point to the limit: its members share one velocity and the sum of their masses
   const auto nv = static_cast<std::size_t>(s.x.cols());
-  point_.resize(nv);
+  point_ = sewn_point_of(nv, s.merged);
   w_.resize(nv);
-  for (std::size_t i = 0; i < nv; ++i) point_[i] = static_cast<int>(i), w_[i] = s.inv_m[static_cast<Eigen::Index>(i)];
+  for (std::size_t i = 0; i < nv; ++i) w_[i] = s.inv_m[static_cast<Eigen::Index>(i)];
   for (const auto& group : s.merged) {
     Real m = 0;
     bool attached = false;
     for (int i : group) m += s.m[i], attached = attached || s.inv_m[i] == 0;
-    for (int i : group) {
-      const auto k = static_cast<std::size_t>(i);
-      point_[k] = group.front(), w_[k] = attached ? 0 : 1 / m;
-    }
+    for (int i : group) w_[static_cast<std::size_t>(i)] = attached ? 0 : 1 / m;
   }
 }
 
@@ -112,13 +109,8 @@ void Impulses::gather_touches(const LimitState& s) {
 }
 
 Real Impulses::face_inverse_mass(const ClothMesh& mesh, int q) const {
-  // an impulse J at the midpoint, J/4 to each corner, changes the midpoint's velocity by J times this: corners that
-  // share a point (sewn) move it together
-  Real sum = 0;
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b)
-      if (point(mesh.quads(a, q)) == point(mesh.quads(b, q))) sum += w(mesh.quads(b, q));
-  return sum / 16;
+  return quad_midpoint_inverse_mass(
+      mesh.quads, q, [&](int i) { return point(i); }, [&](int i) { return w(i); });
 }
 
 void Impulses::warm_start(LimitState& s) {

@@ -335,19 +335,11 @@ void VelocitySweep<Derived>::stop_inward_contacts() {
 
 template <class Derived>
 Real VelocitySweep<Derived>::face_inverse_mass(Eigen::Index q) const {
-  // an impulse J at the midpoint, J/4 to each corner, changes the midpoint's velocity by J times this: corners of
-  // one sewn point move it together
-  const ClothMesh& mesh = s_->mesh;
   const auto point = [&](int i) {
     const int g = group_of_[static_cast<std::size_t>(i)];
     return g < 0 ? i : -1 - g;
   };
-  Real sum = 0;
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b)
-      if (point(mesh.quads(a, q)) == point(mesh.quads(b, q)) && !fixed(mesh.quads(b, q)))
-        sum += 1 / mass(mesh.quads(b, q));
-  return sum / 16;
+  return quad_midpoint_inverse_mass(s_->mesh.quads, q, point, [&](int i) { return fixed(i) ? 0 : 1 / mass(i); });
 }
 
 template <class Derived>

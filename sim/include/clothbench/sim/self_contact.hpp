@@ -31,6 +31,7 @@ class SelfContacts {
 
   std::vector<TriangleGrid::Triangle> triangles_;  // two per quad
   std::vector<int> point_;                         // per vertex: its point (sewn groups and seam pairs joined)
+  std::vector<std::vector<int>> grouped_;          // the sewn groups point_ was made from
   std::vector<Eigen::Index> seen_;                 // per triangle: the last point that tested it
   TriangleGrid grid_;
   Points3 built_;                                         // the positions the candidates were found at
