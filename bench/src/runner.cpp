@@ -20,7 +20,9 @@
 #include "clothbench/io/errors.hpp"
 #include "clothbench/io/pattern_file.hpp"
 #include "clothbench/io/pattern_loader.hpp"
+#include "clothbench/sim/body_measure.hpp"
 #include "clothbench/sim/garment.hpp"
+#include "clothbench/sim/garment_draft.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
 #include "dressing.hpp"
 #include "measurement.hpp"
@@ -69,11 +71,11 @@ struct Rig {
   Collider& dressing_collider() const { return dresser ? *dresser : *collider; }
 
   BodySource source;
-  BodyFrame frame;          // the body as the colliders see it (the collision proxy's, with one)
-  BodyFrame exact_scratch;  // the exact body of `frame`, with a collision proxy
+  BodyFrame frame;                              // the body as the colliders see it (the collision proxy's, with one)
+  BodyFrame exact_scratch;                      // the exact body of `frame`, with a collision proxy
   std::unique_ptr<Collider> collider, dresser;  // under test; collider.dress_with's (null without)
   std::optional<Simulator> sim;
-  std::optional<BodyBetweenFrames> dressing;    // the dressing collider as the simulator sees it
+  std::optional<BodyBetweenFrames> dressing;  // the dressing collider as the simulator sees it
 };
 
 // the scene as run, in the result
@@ -105,13 +107,22 @@ const BodyFrame& pose_body(Rig& rig, RunResult& r) {
   return exact;
 }
 
+// a garment of type g.fit drafted from the body's measurements (Durupinar section 2) at the dressing pose
+Pattern fitted_pattern(const Scene& scene, const GarmentSpec& g, const BodyFrame& body) {
+  try {
+    return draft_garment(g.fit, body, measure_body(body), g.ease_cm >= 0 ? g.ease_cm : size_ease_cm(g.size));
+  } catch (const std::invalid_argument& e) {
+    throw InputError(located(scene.path, 0, "garment.fit = \"" + g.fit + "\": " + e.what()));
+  }
+}
+
 // every garment of the scene meshed and placed on the exact body (a jittered placement moved by its seed's offset)
 ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   if (scene.garments.empty()) throw InputError(located(scene.path, 0, "the scene has no [[garment]]"));
   ClothMesh cloth;
   for (const auto& g : scene.garments) {
-    const std::string path = resolve_scene_path(scene, g.file);
-    const Pattern pattern = load_pattern(path);
+    const std::string path = g.fit.empty() ? resolve_scene_path(scene, g.file) : scene.path;
+    const Pattern pattern = g.fit.empty() ? load_pattern(path) : fitted_pattern(scene, g, body);
     for (const std::string& w : seam_length_warnings(pattern))
       std::fprintf(stderr, "clothbench: warning: %s: %s\n", path.c_str(), w.c_str());
     MeshingOptions options;
@@ -136,7 +147,8 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
 
 std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
   if (name == "sphere") {
-    if (!body.is_sphere()) throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
+    if (!body.is_sphere())
+      throw InputError(located(scene.path, 0, "collider.name = \"sphere\" needs body.shape = \"sphere\""));
     return std::make_unique<SphereCollider>(body.sphere_center(0), scene.body.radius, scene.collider_options);
   }
   return make_collider(name, scene.collider_options);
@@ -242,15 +254,14 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   // up front where the run may be long: the animation's prediction, or the dressing's bound ten times over (a bound
   // the shipped scenes end far inside, noise at every run)
   const double above = options.estimate_above_s;
-  if (options.estimate_only ||
-      (options.progress && (estimate.animation_s > above || estimate.dressing_s > 10 * above)))
+  if (options.estimate_only || (options.progress && (estimate.animation_s > above || estimate.dressing_s > 10 * above)))
     print_estimate(label, scene, r, budget, estimate);
   if (options.estimate_only) return r;
   // the estimate's timing queries are not the run's: its share of searches counts from here
   const CollideStats before = rig.collider->stats();
   Progress progress(options.progress, label, *rig.sim);
-  const RunContext run{scene, options, rig.source, rig.frame, *rig.collider, rig.dressing_collider(), *rig.sim,
-                       progress};
+  const RunContext run{scene,    options, rig.source, rig.frame, *rig.collider, rig.dressing_collider(),
+                       *rig.sim, progress};
   run_phases(run, budget, r);
   finish(run, rig.exact_scratch, before, r);
   return r;

@@ -1,6 +1,7 @@
 // Scene files: TOML through toml++, every key checked, errors located at file:line.
 #include "clothbench/bench/scene.hpp"
 
+#include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,12 +11,12 @@
 #include <map>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 #include <vector>
 
 #include "clothbench/config.h"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
+#include "clothbench/sim/garment_draft.hpp"
 #include "clothbench/sim/param_fields.hpp"
 
 namespace clothbench {
@@ -187,7 +188,8 @@ void visit_fields(B& b, V& v) {
   v(Key{"collision_triangles", "", "> 0: colliders see a simplified copy", Hash::kWhenNonzero}, b.collision_triangles,
     Range{0, 1e8});
   v(Key{"shape", "", "mesh or sphere"}, b.shape, fields::checked([](const std::string& x) {
-      if (x != "mesh" && x != "sphere") throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + x + "\"");
+      if (x != "mesh" && x != "sphere")
+        throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + x + "\"");
     }));
   v(Key{"radius", "m", "sphere radius"}, b.radius, Range{1e-3, 100});
   v(Key{"center", "m", "sphere centre at t = 0"}, b.center, fields::Triple{});
@@ -197,7 +199,18 @@ void visit_fields(B& b, V& v) {
 
 template <class G, class V, std::enable_if_t<std::is_same_v<std::remove_const_t<G>, GarmentSpec>, int> = 0>
 void visit_fields(G& g, V& v) {
-  v(Key{"file", "", "pattern file (required)"}, g.file, Text{});
+  v(Key{"file", "", "pattern file (or fit)"}, g.file, Text{});
+  v(Key{"fit", "", "a garment type drafted from the body's measurements (or file)"}, g.fit,
+    fields::checked([](const std::string& x) {
+      std::string types;
+      for (const std::string& t : draft_types()) {
+        if (x == t) return;
+        types += (types.empty() ? "" : ", ") + t;
+      }
+      if (!x.empty()) throw std::invalid_argument("expected a drafted garment type (" + types + "), got \"" + x + "\"");
+    }));
+  v(Key{"size", "", "fit: S, M, L or XL"}, g.size, fields::checked([](const std::string& x) { size_ease_cm(x); }));
+  v(Key{"ease_cm", "cm", "fit: the ease at the hip; -1: the size's"}, g.ease_cm, Range{-1, 100});
   v(Key{"vertices", "", "target vertex count; 0: use spacing_cm"}, g.vertices, Range{0, 1e6});
   v(Key{"spacing_cm", "cm", "grid spacing when vertices is 0"}, g.spacing_cm, Range{0.05, 100});
   v(Key{"attach", "", "honour the pattern's attached edges"}, g.attach, Flag{});
@@ -235,8 +248,10 @@ class Reader {
   template <class T>
   void operator()(const Key& k, T& m, const fields::RangeOrAuto& r) {
     const toml::node* n = s_.find(k.name);
-    if (n && n->value<std::string>() == std::optional<std::string>("auto")) m = 0;
-    else if (n) s_.number(k.name, m, r.lo, r.hi);
+    if (n && n->value<std::string>() == std::optional<std::string>("auto"))
+      m = 0;
+    else if (n)
+      s_.number(k.name, m, r.lo, r.hi);
   }
   template <class T>
   void operator()(const Key& k, T& m, const fields::Scaled& r) {
@@ -327,12 +342,20 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
   read_section(section("body"), s.body);
   if (const toml::node* g = root.get("garment")) {
     const toml::array* list = g->as_array();
-    if (!list) throw InputError(located(file, static_cast<int>(g->source().begin.line), "garment: use [[garment]] tables"));
+    if (!list)
+      throw InputError(located(file, static_cast<int>(g->source().begin.line), "garment: use [[garment]] tables"));
     for (const auto& item : *list) {
-      if (!item.as_table()) throw InputError(located(file, static_cast<int>(item.source().begin.line), "garment: expected a table"));
+      if (!item.as_table())
+        throw InputError(located(file, static_cast<int>(item.source().begin.line), "garment: expected a table"));
       GarmentSpec spec;
       read_section(Section(item.as_table(), file, "garment"), spec);
-      if (spec.file.empty()) throw InputError(located(file, static_cast<int>(item.source().begin.line), "garment.file is required"));
+      if (spec.file.empty() == spec.fit.empty())
+        throw InputError(located(file, static_cast<int>(item.source().begin.line),
+                                 spec.file.empty() ? "garment: give a pattern file or a fit (neither is given)"
+                                                   : "garment: give a pattern file or a fit, not both"));
+      if (spec.ease_cm < 0 && spec.ease_cm != -1)
+        throw InputError(located(file, static_cast<int>(item.source().begin.line),
+                                 "garment.ease_cm: expected -1 (the size's) or 0 to 100 cm"));
       s.garments.push_back(spec);
     }
   }
@@ -341,10 +364,10 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
   read_section(section("solver"), s.solver);
   read_section(section("collider"), s);
   if (s.body.skin_mm > 0 && !(s.body.skin_mm * 1e-3 < double(s.collider_options.tol)))
-    throw InputError(located(file, 0, "body.skin_mm = " + std::to_string(s.body.skin_mm) +
-                                          ": must be below collider.tol (" +
-                                          std::to_string(1e3 * double(s.collider_options.tol)) +
-                                          " mm), or the skin would push every contact out"));
+    throw InputError(located(file, 0,
+                             "body.skin_mm = " + std::to_string(s.body.skin_mm) + ": must be below collider.tol (" +
+                                 std::to_string(1e3 * double(s.collider_options.tol)) +
+                                 " mm), or the skin would push every contact out"));
   read_section(section("stop"), s.stop);
   check_pose_fps(file, s.body);
   return s;
@@ -509,7 +532,8 @@ std::string config_hash(const Scene& scene) {
   // the settings and the bytes of every file they name: an edited pattern or body is another configuration
   std::string text = config_text(scene);
   if (scene.body.shape == "mesh") text += "body.file_fnv1a = " + file_digest(scene, scene.body.file) + "\n";
-  for (const auto& g : scene.garments) text += "garment.file_fnv1a = " + file_digest(scene, g.file) + "\n";
+  for (const auto& g : scene.garments)
+    if (!g.file.empty()) text += "garment.file_fnv1a = " + file_digest(scene, g.file) + "\n";
   Fnv1a f;
   f.add(text.data(), text.size());
   return f.hex();

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <regex>
@@ -12,6 +13,7 @@
 #include "clothbench/bench/report.hpp"
 #include "clothbench/bench/runner.hpp"
 #include "clothbench/config.h"
+#include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
 
@@ -136,6 +138,21 @@ TEST(Runner, TheFirstStaticSceneEndsDressedWithNoSkinShowing) {
   EXPECT_LE(r.seam_gap_max_mm, 2.0);
 }
 
+// `fit`: a skirt drafted from Debian's human's own measurements (Durupinar section 2), sewn and draped on it within
+// every limit; its configuration names the fit, not a file
+TEST(Runner, AFittedSkirtIsDraftedFromTheBodysMeasurementsAndDressedOnIt) {
+  if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
+  RunOptions quiet;
+  quiet.progress = false;
+  const Scene s = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/dressing/skirt.toml",
+                             {"garment.file=", "garment.fit=skirt", "garment.size=M", "garment.vertices=300"});
+  const RunResult r = run_scene(s, quiet);
+  ASSERT_FALSE(r.divergence);
+  EXPECT_TRUE(r.sew.reached);
+  EXPECT_TRUE(limit_misses(r).empty()) << limits_cell(r);
+  EXPECT_NE(config_text(s).find("garment.fit = \"skirt\""), std::string::npos) << config_text(s);
+}
+
 // a garment dressed on a walking body's pose mid-stride: the body stands still while it is sewn and draped,
 // so the cloth settles on it (given the clip's velocity at that pose, the contacts dragged it along and it
 // never settled). One limit pass, once a step: the cloth stretches round the open stride while it is sewn (the
@@ -235,11 +252,12 @@ TEST(Runner, AGarmentPlacedInsideTheBodyIsWarnedAbout) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   };
   // the skirt's panels 2 cm before and behind the torso's axis, not wrapped round it
-  const std::string pattern = std::regex_replace(read(src + "/scenes/garments/skirt.pattern"),
-                                                 std::regex("offset 0 0 (-?)20 (yaw 180 )?wrap 20"), "offset 0 0 $012 $2wrap 0");
+  const std::string pattern =
+      std::regex_replace(read(src + "/scenes/garments/skirt.pattern"),
+                         std::regex("offset 0 0 (-?)20 (yaw 180 )?wrap 20"), "offset 0 0 $012 $2wrap 0");
   std::ofstream(dir + "/inside.pattern") << pattern;
-  std::ofstream(dir + "/inside.toml") << std::regex_replace(read(src + "/scenes/dressing/skirt.toml"),
-                                                            std::regex("garments/skirt\\.pattern"), dir + "/inside.pattern");
+  std::ofstream(dir + "/inside.toml") << std::regex_replace(
+      read(src + "/scenes/dressing/skirt.toml"), std::regex("garments/skirt\\.pattern"), dir + "/inside.pattern");
   RunOptions estimate;
   estimate.progress = false;
   estimate.estimate_only = true;

@@ -1,10 +1,10 @@
 // Scene files: defaults, every section read, unknown keys and bad values located at file:line, --set.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "clothbench/bench/scene.hpp"
 #include "clothbench/config.h"
@@ -62,7 +62,8 @@ name = "embree"
 map_size = 512
 [stop]
 drape_max_s = 0.5
-)", "s.toml");
+)",
+                              "s.toml");
   EXPECT_EQ(s.name, "x");
   EXPECT_EQ(s.body.animation, "walk_07_01");
   EXPECT_DOUBLE_EQ(s.body.fps, 30);
@@ -86,7 +87,17 @@ TEST(Scene, ErrorsNameFileLineAndKey) {
   EXPECT_NE(error_of("[collider]\nmap_size = 320.5\n").find("expected an integer"), std::string::npos);
   EXPECT_NE(error_of("[bodyy]\n").find("s.toml:1: unknown section 'bodyy'"), std::string::npos);
   EXPECT_NE(error_of("[body\n").find("s.toml:1"), std::string::npos);
-  EXPECT_NE(error_of("[[garment]]\nvertices = 5\n").find("garment.file is required"), std::string::npos);
+  EXPECT_NE(error_of("[[garment]]\nvertices = 5\n").find("give a pattern file or a fit (neither"), std::string::npos);
+  EXPECT_NE(error_of("[[garment]]\nfile = \"a.pattern\"\nfit = \"skirt\"\n")
+                .find("s.toml:1: garment: give a pattern "
+                      "file or a fit, not both"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[garment]]\nfit = \"cape\"\n").find("garment.fit: expected a drafted garment type (skirt"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[garment]]\nfit = \"skirt\"\nsize = \"XXL\"\n").find("S, M, L, XL"), std::string::npos);
+  EXPECT_NE(error_of("[[garment]]\nfit = \"skirt\"\nease_cm = -0.5\n").find("expected -1 (the size's) or 0 to 100"),
+            std::string::npos);
+  EXPECT_EQ(error_of("[[garment]]\nfit = \"skirt\"\nsize = \"XL\"\nease_cm = 20\n"), "");
   EXPECT_NE(error_of("[solver]\nface_queries = 1\n").find("expected true or false"), std::string::npos);
 }
 
@@ -254,7 +265,8 @@ TEST(Scene, ReadmeDocumentsEveryKey) {
 
 // a value the reader accepts is one the simulator accepts: both check the same rows
 TEST(Scene, ReaderAndSimulatorShareTheBounds) {
-  EXPECT_NE(error_of("[solver]\nthreshold = 1.5\n").find("solver.threshold: must be in [0.0001, 1]"), std::string::npos);
+  EXPECT_NE(error_of("[solver]\nthreshold = 1.5\n").find("solver.threshold: must be in [0.0001, 1]"),
+            std::string::npos);
   EXPECT_NE(error_of("[solver]\nbounds_margin = 0\n").find("solver.bounds_margin: must be in"), std::string::npos);
   Scene s = parse_scene("[solver]\nthreshold = 1\nbounds_margin = 7\n", "s.toml");
   EXPECT_EQ(s.solver.bounds_margin, 7.f);
@@ -282,8 +294,9 @@ TEST(Scene, DefaultsAndPresetsAreValid) {
 // a regime given with --set other than the file's own runs the scene under that preset: the file's values of the keys
 // the presets decide differently give way (not those they leave alone), and --set keys still apply after it
 TEST(Scene, ARegimeGivenWithSetOverridesTheFilesPresetKeys) {
-  const std::string text = "[solver]\nlimit_passes = 16\nmerge_distance = 0.004\nthreshold = 0.08\n"
-                           "[material]\nk_structural = 90\ndamping = 5\n";
+  const std::string text =
+      "[solver]\nlimit_passes = 16\nmerge_distance = 0.004\nthreshold = 0.08\n"
+      "[material]\nk_structural = 90\ndamping = 5\n";
   const Scene own = parse_scene(text, "s.toml");
   EXPECT_EQ(own.solver.limit_passes, 16);
   EXPECT_EQ(own.material.k_structural, 90.f);
@@ -306,7 +319,8 @@ TEST(Scene, ARegimeGivenWithSetOverridesTheFilesPresetKeys) {
   const std::string papers_file = "[solver]\nregime = \"papers\"\nlimit_passes = 4\n";
   EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=papers"}).solver.limit_passes, 4);
   EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=\"papers\""}).solver.limit_passes, 4);  // TOML text
-  EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=stable"}).solver.limit_passes, SolverParams{}.limit_passes);
+  EXPECT_EQ(parse_scene(papers_file, "s.toml", {"solver.regime=stable"}).solver.limit_passes,
+            SolverParams{}.limit_passes);
 }
 
 TEST(Scene, EveryCommittedSceneParses) {

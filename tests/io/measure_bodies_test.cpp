@@ -2,17 +2,21 @@
 // the walking body's rest pose, and the same body scaled.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/body_measure.hpp"
+#include "clothbench/sim/garment_draft.hpp"
 
 namespace clothbench {
 namespace {
@@ -53,7 +57,46 @@ TEST(MeasureBodies, TheWalkingBodysRestPose) {
   expect_a_standing_body(measure_body(load_body(path).rest()), "walking body");
 }
 
-// the CLI: a standing body prints its measurements; a closed mesh that is no standing body, and a missing file,
+// a skirt drafted from Debian's human (Durupinar section 2): two panels sewn at the sides whose widths add up to the
+// hip girth plus the ease at the hip and the waist girth plus the waistband's 2 cm at the top; a body 10 % larger
+// gets panels 10 % of its girths wider; bad types and eases are refused naming what is allowed
+TEST(Draft, ASkirtHasTheBodysGirthsPlusItsEase) {
+  if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const BodyFrame rest = load_body("debian:human").rest();
+  const BodyMeasurements m = measure_body(rest);
+  // the two (equal) panels' widths at the waist (the top edge) and at the hip (where the sides bend)
+  const auto widths = [](const Pattern& p) {
+    const auto& outline = p.panels[0].outline;
+    double top = 0, waist = 0, hip = 0;
+    for (const Vec2d& q : outline) top = std::max(top, q.y());
+    for (const Vec2d& q : outline) {
+      if (q.y() == top) waist = std::max(waist, 2 * std::abs(q.x()));
+      if (q.y() > 0 && q.y() < top) hip = std::max(hip, 2 * std::abs(q.x()));
+    }
+    return std::pair<double, double>{2 * waist, 2 * hip};
+  };
+  const Pattern p = draft_garment("skirt", rest, m, 8);
+  ASSERT_EQ(p.panels.size(), 2u);
+  EXPECT_EQ(p.seams.size(), 2u);
+  for (const Panel& panel : p.panels) EXPECT_TRUE(panel.attached_edges.empty()) << panel.name;
+  const auto [waist, hip] = widths(p);
+  EXPECT_NEAR(waist, 100 * m["waist girth"].value_m + 2, 1e-6);
+  EXPECT_NEAR(hip, 100 * m["hip girth"].value_m + 8, 1e-6);
+  BodyFrame big = rest;
+  big.positions *= 1.1f;
+  const BodyMeasurements mb = measure_body(big);
+  const auto [big_waist, big_hip] = widths(draft_garment("skirt", big, mb, 8));
+  EXPECT_NEAR(big_waist - 2, 1.1 * (waist - 2), 0.03 * waist);
+  EXPECT_NEAR(big_hip - 8, 1.1 * (hip - 8), 0.03 * hip);
+  EXPECT_THROW(draft_garment("cape", rest, m, 8), std::invalid_argument);
+  EXPECT_THROW(draft_garment("skirt", rest, m, -1), std::invalid_argument);
+  EXPECT_THROW(size_ease_cm("XXL"), std::invalid_argument);
+  EXPECT_EQ(size_ease_cm("S"), 4);
+  EXPECT_EQ(size_ease_cm("XL"), 16);
+}
+
+// the CLI: a standing body prints its measurements and drafts a garment into a pattern file; a closed mesh that is no
+// standing body, a missing file, a draft without --out or of an unknown type,
 // exit 2 (bad input) saying what is wrong
 TEST(MeasureCommand, ExitCodes) {
   const char* bin = std::getenv("CLOTHBENCH_BIN");
@@ -75,6 +118,14 @@ TEST(MeasureCommand, ExitCodes) {
   if (!std::filesystem::exists(kDebianHumanBody)) return;
   EXPECT_EQ(run("debian:human --json"), 0);
   EXPECT_NE(printed().find("\"waist girth\""), std::string::npos) << printed();
+  const std::string drafted = testing::TempDir() + "drafted_skirt.pattern";
+  EXPECT_EQ(run("debian:human --draft skirt --size L --out " + drafted), 0) << printed();
+  EXPECT_NE(printed().find("12 cm of ease"), std::string::npos) << printed();
+  EXPECT_TRUE(std::filesystem::exists(drafted));
+  EXPECT_EQ(run("debian:human --draft skirt"), 2);  // no --out
+  EXPECT_NE(printed().find("--out"), std::string::npos) << printed();
+  EXPECT_EQ(run("debian:human --draft cape --out " + drafted), 2);
+  EXPECT_NE(printed().find("skirt"), std::string::npos) << printed();
 }
 
 }  // namespace

@@ -29,17 +29,20 @@ struct BodySpec {
                                       ///< second thread while the cloth steps through this one (Collider::prepare_body)
   int collision_triangles = 0;        ///< > 0: the colliders see a copy simplified to about this many triangles
                                       ///< (BodyModel::simplified); the oracle measures against the exact body
-  double skin_mm = 0;                 ///< the body is answered this much thicker in every phase (BodyBetweenFrames) [mm]
-  std::string shape = "mesh";         ///< "mesh" or "sphere"
-  Real radius = 0.25f;                ///< sphere radius [m]
-  Vec3 center = Vec3(0, 0.5f, 0);     ///< sphere centre at t = 0 [m]
-  Vec3 velocity = Vec3::Zero();       ///< sphere velocity [m/s] during the animate phase
-  double move_s = 0;                  ///< sphere: seconds of motion (animate phase)
+  double skin_mm = 0;              ///< the body is answered this much thicker in every phase (BodyBetweenFrames) [mm]
+  std::string shape = "mesh";      ///< "mesh" or "sphere"
+  Real radius = 0.25f;             ///< sphere radius [m]
+  Vec3 center = Vec3(0, 0.5f, 0);  ///< sphere centre at t = 0 [m]
+  Vec3 velocity = Vec3::Zero();    ///< sphere velocity [m/s] during the animate phase
+  double move_s = 0;               ///< sphere: seconds of motion (animate phase)
 };
 
 /// One garment of the scene.
 struct GarmentSpec {
-  std::string file;        ///< pattern file (scene-relative, or relative to scenes/)
+  std::string file;        ///< pattern file (scene-relative, or relative to scenes/); or:
+  std::string fit;         ///< a garment type drafted from the body's measurements (garment_draft.hpp)
+  std::string size = "M";  ///< fit: S, M, L or XL (the ease at the hip)
+  double ease_cm = -1;     ///< fit: the ease at the hip [cm]; -1: the size's
   int vertices = 0;        ///< target vertex count (0: use spacing_cm)
   double spacing_cm = 2;   ///< grid spacing when vertices = 0 [cm]
   bool attach = true;      ///< honour the pattern's attached edges (Durupinar 3.2)
@@ -49,18 +52,18 @@ struct GarmentSpec {
 
 /// When each phase ends (definitions printed in every table header).
 struct StopRule {
-  bool sew = true;              ///< run the sew phase (seam forces, no gravity)
-  double sew_max_s = 1;         ///< sew phase limit [simulated s]
-  Real sewn_gap_mm = 2;         ///< sewn: every seam pair closer than this [mm] (or merged)
-  double drape_max_s = 1;       ///< drape phase limit [simulated s]
-  Real settle_speed = 0.05f;    ///< settled: RMS cloth speed below this [m/s] ...
-  double settle_window_s = 0.1; ///< ... for this long [simulated s]
-  long max_iterations = 0;      ///< > 0: stop every phase after this many iterations (timing runs)
+  bool sew = true;               ///< run the sew phase (seam forces, no gravity)
+  double sew_max_s = 1;          ///< sew phase limit [simulated s]
+  Real sewn_gap_mm = 2;          ///< sewn: every seam pair closer than this [mm] (or merged)
+  double drape_max_s = 1;        ///< drape phase limit [simulated s]
+  Real settle_speed = 0.05f;     ///< settled: RMS cloth speed below this [m/s] ...
+  double settle_window_s = 0.1;  ///< ... for this long [simulated s]
+  long max_iterations = 0;       ///< > 0: stop every phase after this many iterations (timing runs)
 };
 
 /// A whole scene.
 struct Scene {
-  std::string path;   ///< the file it came from ("" when built in code)
+  std::string path;  ///< the file it came from ("" when built in code)
   std::string name;
   std::string description;
   BodySpec body;
@@ -88,8 +91,8 @@ Scene parse_scene(const std::string& text, const std::string& name, const std::v
 struct SceneKey {
   std::string section;  ///< "body", "garment", ... (scene.hpp's sections)
   std::string key;
-  std::string unit;     ///< "" when none
-  std::string doc;      ///< one line; scenes/README.md says the rest
+  std::string unit;  ///< "" when none
+  std::string doc;   ///< one line; scenes/README.md says the rest
 };
 /// Every key of every section, in the tables' order.
 std::vector<SceneKey> scene_keys();
