@@ -350,9 +350,11 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
       GarmentSpec spec;
       read_section(Section(item.as_table(), file, "garment"), spec);
       if (spec.file.empty() == spec.fit.empty())
-        throw InputError(located(file, static_cast<int>(item.source().begin.line),
-                                 spec.file.empty() ? "garment: give a pattern file or a fit (neither is given)"
-                                                   : "garment: give a pattern file or a fit, not both"));
+        throw InputError(located(
+            file, static_cast<int>(item.source().begin.line),
+            spec.file.empty()
+                ? "garment: give a pattern file or a fit (neither is given)"
+                : "garment: give a pattern file or a fit, not both (`--set garment.file=` clears a scene's file)"));
       if (spec.ease_cm < 0 && spec.ease_cm != -1)
         throw InputError(located(file, static_cast<int>(item.source().begin.line),
                                  "garment.ease_cm: expected -1 (the size's) or 0 to 100 cm"));
