@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <optional>
 #include <random>
@@ -120,9 +121,11 @@ Pattern fitted_pattern(const Scene& scene, const GarmentSpec& g, const BodyFrame
 ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
   if (scene.garments.empty()) throw InputError(located(scene.path, 0, "the scene has no [[garment]]"));
   ClothMesh cloth;
+  std::map<std::string, int> worn;  // how many garments of each pattern name so far
   for (const auto& g : scene.garments) {
     const std::string path = g.fit.empty() ? resolve_scene_path(scene, g.file) : scene.path;
     const Pattern pattern = g.fit.empty() ? load_pattern(path) : fitted_pattern(scene, g, body);
+    const int nth = ++worn[pattern.name];
     for (const std::string& w : seam_length_warnings(pattern))
       std::fprintf(stderr, "clothbench: warning: %s: %s\n", path.c_str(), w.c_str());
     MeshingOptions options;
@@ -137,6 +140,11 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
         const Vec3 offset(u(rng), u(rng), u(rng));
         garment.positions.colwise() += offset;
       }
+      // with several garments a panel is named after its garment too ("shirt.front", "skirt.front"; a pattern
+      // worn again is numbered, "skirt#2.front"), so that what a run reports says which garment it means
+      if (scene.garments.size() > 1)
+        for (std::string& name : garment.panel_names)
+          name = pattern.name + (nth > 1 ? "#" + std::to_string(nth) : "") + "." + name;
       cloth.append(garment);
     } catch (const std::invalid_argument& e) {
       throw InputError(located(path, 0, e.what()));

@@ -40,6 +40,20 @@ TEST(Runner, SameSceneTwiceGivesIdenticalPositions) {
   EXPECT_EQ(a.accuracy.inside, b.accuracy.inside);
 }
 
+// two garments in one scene: their panels are named after their garments (the same pattern twice is numbered), so
+// that a report of the cloth through itself says which garment crosses which
+TEST(Runner, TwoGarmentsPanelsAreNamedAfterTheirGarments) {
+  Scene s = small_tablecloth();
+  s.garments.push_back(s.garments.front());
+  s.garments.back().jitter_mm = 50, s.garments.back().seed = 1;
+  s.stop.drape_max_s = 0.05;
+  RunOptions quiet;
+  quiet.progress = false;
+  const RunResult r = run_scene(s, quiet);
+  EXPECT_EQ(r.mesh.panel_names, (std::vector<std::string>{"tablecloth_sphere.cloth", "tablecloth_sphere#2.cloth"}));
+  EXPECT_EQ(run_scene(small_tablecloth(), quiet).mesh.panel_names, (std::vector<std::string>{"cloth"}));
+}
+
 TEST(Runner, MovingSphereIsAnimatedAndMeasured) {
   RunOptions quiet;
   quiet.progress = false;
