@@ -77,7 +77,7 @@ void add_measure_command(CLI::App& app, Action& action) {
   cmd->add_option("--draft", args->draft, "draft a garment from the measurements: skirt");
   auto* size =
       cmd->add_option("--size", args->size, "the garment's size: its ease at the hip, S 4, M 8, L 12, XL 16 cm")
-          ->check(CLI::IsMember({"S", "M", "L", "XL"}))
+          ->check(CLI::IsMember(draft_sizes()))
           ->capture_default_str();
   cmd->add_option("--ease", args->ease_cm, "the ease at the hip [cm], instead of --size")
       ->check(CLI::Range(0.0, 100.0))

@@ -129,13 +129,10 @@ std::string sew_speed_sweep(ExperimentContext& ctx, const std::vector<Garment>& 
          t.str();
 }
 
-// a run's wall time to dressed [s], one thread, the collider's set-up included
-double wall_to_dressed_s(const RunResult& r) { return r.setup_ms / 1e3 + r.total_s(); }
-
 // the wall times to dressed of every run of the request that returned r
 Spread wall_spread(const ExperimentContext& ctx, const RunResult& r) {
   std::vector<double> s;
-  for (const RunResult* each : ctx.repetitions_of(r)) s.push_back(wall_to_dressed_s(*each));
+  for (const RunResult* each : ctx.repetitions_of(r)) s.push_back(each->dressed_wall_s());
   return spread(s);
 }
 
@@ -158,7 +155,6 @@ struct Quickest {
 // garment) run kVerdictRuns times: the summary's quickest and the targets' verdict are chosen by their median
 // (--quick: no repetitions)
 constexpr double kContender = 0.75;
-constexpr int kVerdictRuns = 5;
 
 // the page's opening lines: the papers' counts, our quickest dressing within every limit, the verdict
 std::vector<std::string> summary(const std::vector<Garment>& garments, const std::vector<Quickest>& quickest) {
@@ -292,7 +288,7 @@ void repeat_contenders(ExperimentContext& ctx, const std::vector<Garment>& garme
   if (ctx.quick()) return;
   const auto wall_within = [&](const Row& w) {
     const RunResult& r = ctx.run(garments[w.garment].scene, w.collider, overrides(ctx, garments[w.garment], *w.solver));
-    return !r.divergence && limit_misses(r).empty() ? wall_to_dressed_s(r) : -1.0;
+    return !r.divergence && limit_misses(r).empty() ? r.dressed_wall_s() : -1.0;
   };
   std::vector<double> quickest(garments.size(), -1);
   for (const Row& w : rows) {

@@ -117,7 +117,7 @@ Measured measure(const Case& c, const Setting& s, const RunResult& r) {
   m.limit_ms = r.limit_ms_per_iteration();
   m.step_ms = r.ms_per_iteration();
   m.share = m.step_ms > 0 ? m.limit_ms / m.step_ms : 0;
-  m.speed = walking ? double(r.frames) / (r.animate.wall_ms / 1e3) : r.setup_ms / 1e3 + r.total_s();
+  m.speed = walking ? double(r.frames) / (r.animate.wall_ms / 1e3) : r.dressed_wall_s();
   return m;
 }
 

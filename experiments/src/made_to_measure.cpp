@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,6 @@ struct Body {
 // the bodies this project ships or finds, each in its rest pose
 const Body kBodies[] = {{"Debian's human (human.zae)", "debian:human"},
                         {"the walking body (MakeHuman), rest pose", "data:body/mh_female_walk.glb"}};
-const char* const kSizes[] = {"S", "M", "L", "XL"};
 // the landmarks the fit is measured at
 const char* const kLandmarks[] = {"waist girth", "hip girth"};
 
@@ -65,10 +65,9 @@ struct Row {
 };
 
 std::vector<std::string> overrides(const ExperimentContext& ctx, const Body& b, const std::string& type,
-                                   const char* size) {
+                                   const std::string& size) {
   std::vector<std::string> sets{"body.file=" + std::string(b.file), "garment.file=", "garment.fit=" + type,
-                                std::string("garment.size=") + size,
-                                "garment.vertices=" + std::to_string(ctx.quick() ? 150 : 600)};
+                                "garment.size=" + size, "garment.vertices=" + std::to_string(ctx.quick() ? 150 : 600)};
   if (ctx.quick()) sets.push_back("stop.max_iterations=40");
   return sets;
 }
@@ -86,7 +85,7 @@ MarkdownTable table() {
 }
 
 // the row's cells, and what the summary gathers from it
-std::vector<std::string> cells(const Body& b, const std::string& type, const char* size, const RunResult& r,
+std::vector<std::string> cells(const Body& b, const std::string& type, const std::string& size, const RunResult& r,
                                const BodyMeasurements& m, Row& row) {
   std::vector<std::string> c{b.label,
                              type,
@@ -96,14 +95,14 @@ std::vector<std::string> cells(const Body& b, const std::string& type, const cha
                              std::to_string(r.vertices)};
   if (r.divergence) {
     c.push_back("diverged at iteration " + std::to_string(r.divergence->iteration));
-    c.resize(c.size() + 11, "-");
+    c.resize(c.size() + 10, "-");  // settled to strain: the columns up to the verdict
     c.push_back("no: diverged");
     return c;
   }
   const Oracle oracle(r.final_body);
-  c.insert(c.end(), {r.sew.reached ? "yes" : "no", r.drape.reached ? "yes" : "no",
-                     std::to_string(r.sew.iterations) + " + " + std::to_string(r.drape.iterations),
-                     num(r.setup_ms / 1e3 + r.total_s(), 3)});
+  c.insert(c.end(),
+           {r.sew.reached ? "yes" : "no", r.drape.reached ? "yes" : "no",
+            std::to_string(r.sew.iterations) + " + " + std::to_string(r.drape.iterations), num(r.dressed_wall_s(), 3)});
   for (const char* l : kLandmarks) {
     row.gaps.push_back(gap_at(oracle, r.mesh, m[l].height_m));
     const Gap& g = row.gaps.back();
@@ -128,7 +127,7 @@ std::vector<std::string> summary(const std::vector<Row>& rows) {
       if (r->size == "M" && !r->meets) m_misses += (m_misses.empty() ? "" : "; ") + what;
       if (!r->gaps.empty()) hip.push_back(r->gaps.back().mean_mm);
     }
-    bool up = hip.size() == std::size(kSizes);
+    bool up = hip.size() == draft_sizes().size();
     std::string series;
     for (std::size_t k = 0; k < hip.size(); ++k) {
       up = up && (k == 0 || hip[k] > hip[k - 1]);
@@ -167,21 +166,23 @@ void made_to_measure(ExperimentContext& ctx) {
   std::vector<Row> rows;
   nlohmann::json series = nlohmann::json::array();
   std::vector<Image> pictures;
-  for (const Body& b : kBodies)
+  for (const Body& b : kBodies) {
+    std::optional<BodyMeasurements> m;  // the body's, once (its rest pose is every row's final body)
     for (const std::string& type : draft_types()) {
       std::vector<double> x, y;
-      for (const char* size : kSizes) {
+      for (const std::string& size : draft_sizes()) {
         const RunResult& r = ctx.run("dressing/skirt.toml", "is-cpu", overrides(ctx, b, type, size));
         ctx.add_run(r, "made-to-measure/" + std::string(b.file) + "/" + type + "/" + size);
-        const BodyMeasurements m = measure_body(r.final_body);
+        if (!m) m = measure_body(r.final_body);
         rows.push_back({b.label, type, size});
-        t.row(cells(b, type, size, r, m, rows.back()));
+        t.row(cells(b, type, size, r, *m, rows.back()));
         if (!rows.back().gaps.empty()) x.push_back(size_ease_cm(size)), y.push_back(rows.back().gaps.back().mean_mm);
-        if (std::string(size) == "M" && !r.divergence)
+        if (size == "M" && !r.divergence)
           pictures.push_back(ctx.pictures().render(r.final_body, r.mesh, 360, View::kFront));
       }
       series.push_back({{"label", std::string(b.label) + ", " + type}, {"x", x}, {"y", y}, {"style", "o-"}});
     }
+  }
   ctx.chart("made-to-measure", {{"title", "Drafted garments: the gap at the hip against the size's ease"},
                                 {"xlabel", "ease at the hip [cm] (S, M, L, XL)"},
                                 {"ylabel", "mean gap at the hip [mm]"},

@@ -198,7 +198,6 @@ inline SummaryPair summary_pair(const ExperimentContext& ctx) {
 }
 
 // the runs of each of the summary pair's rows at the papers' clock: their timing verdicts rest on five at least
-constexpr int kVerdictRuns = 5;
 // the summary pair's rows of every garment at the papers' clock, run kVerdictRuns times (once in --quick); before
 // the table, so that its rows and the JSON's hold every run
 inline void run_verdict_rows(ExperimentContext& ctx) {

@@ -348,7 +348,7 @@ const RunResult& median_rate_run(const ExperimentContext& ctx, const RunResult& 
 }
 
 // the dress's rows on walk_07_01 within every limit at every frame whose one run reaches kContender of the fastest
-// such row's rate, of any collider or of the speed paragraph's is-cpu rows, run kHeadlineRuns times: the headlines
+// such row's rate, of any collider or of the speed paragraph's is-cpu rows, run kVerdictRuns times: the headlines
 // are chosen among them by their median (--quick: the code paths once, no repetitions)
 constexpr double kContender = 0.75;
 void repeat_contenders(ExperimentContext& ctx, const std::vector<WalkRun>& runs) {
@@ -370,7 +370,7 @@ void repeat_contenders(ExperimentContext& ctx, const std::vector<WalkRun>& runs)
   for (const WalkRun& w : runs) {
     const double fps = rate(w);
     if (fps > 0 && (fps >= kContender * any || (frontier(w) && fps >= kContender * speed)))
-      ctx.run(w.scene, w.collider, w.sets, options, kHeadlineRuns);
+      ctx.run(w.scene, w.collider, w.sets, options, kVerdictRuns);
   }
 }
 
@@ -532,7 +532,7 @@ std::string description(const WalkPage& page) {
          "limit at every frame whose one run reached " +
          num(100 * kContender, 0) +
          " % of the fastest such row's frame rate (of any collider, or of the speed paragraph's is-cpu rows) run " +
-         std::to_string(kHeadlineRuns) +
+         std::to_string(kVerdictRuns) +
          " times in all; their frames/s is the median run's (the run whose figures the row shows) with the range, "
          "and the headlines are chosen by it. "
          "The cloth's own clock and what holds each garment besides collisions (is-cpu, walk_07_01): " +

@@ -21,8 +21,7 @@ struct FrameTimes {
 };
 FrameTimes frame_times(const RunResult& r);
 
-// the frame rates of a configuration's runs: a headline rests on kHeadlineRuns of them
-constexpr int kHeadlineRuns = 5;
+// the frame rates of a configuration's runs: a headline rests on kVerdictRuns of them
 struct FrameRates {
   std::vector<double> fps;  // one per run
   // "median of 5 runs, 13.9-14.8" or "one run"

@@ -9,8 +9,6 @@ namespace clothbench {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // the hem's width over the hip's: a little A-line, room for a stride (a straighter small size on the walking body is
 // stretched over the knees past the strain limit)
 constexpr double kHemFlare = 1.2;
@@ -55,7 +53,7 @@ Pattern draft_skirt(const BodyFrame& body, const BodyMeasurements& m, double eas
   const Eigen::Vector2d centre = hips.front().centroid();
   double reach_cm = 0;
   for (const auto& q : hips.front().points) reach_cm = std::max(reach_cm, 100 * (q - centre).norm());
-  const double radius = std::max(hip_w / kPi, reach_cm + kClearanceCm);
+  const double radius = std::max(hip_w / M_PI, reach_cm + kClearanceCm);
   const Vec3 size = box.size();
   Placement front;
   front.anchor = Vec3(Real((centre.x() - box.min.x()) / size.x()), Real((hem_h - box.min.y()) / size.y()),
@@ -77,10 +75,12 @@ Pattern draft_skirt(const BodyFrame& body, const BodyMeasurements& m, double eas
 
 }  // namespace
 
+std::vector<std::string> draft_sizes() { return {"S", "M", "L", "XL"}; }
+
 double size_ease_cm(const std::string& size) {
-  const char* sizes[] = {"S", "M", "L", "XL"};
-  for (int k = 0; k < 4; ++k)
-    if (size == sizes[k]) return 4.0 * (k + 1);
+  const std::vector<std::string> sizes = draft_sizes();
+  for (std::size_t k = 0; k < sizes.size(); ++k)
+    if (size == sizes[k]) return 4.0 * double(k + 1);
   throw std::invalid_argument("size: unknown size '" + size + "' (S, M, L, XL)");
 }
 

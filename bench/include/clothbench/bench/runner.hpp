@@ -90,6 +90,8 @@ struct RunResult {
 
   long iterations() const { return sew.iterations + drape.iterations + animate.iterations; }
   double total_s() const { return (sew.wall_ms + drape.wall_ms + animate.wall_ms) / 1e3; }
+  /// Wall time to dressed on one thread, the collider's set-up included [s].
+  double dressed_wall_s() const { return setup_ms / 1e3 + total_s(); }
   /// A phase field (ms) summed over the phases, per iteration (0 without iterations).
   double per_iteration(double PhaseResult::*field) const;
   double ms_per_iteration() const;

@@ -40,6 +40,9 @@ struct GrowthFit {
 GrowthFit fit_growth(const std::vector<double>& x, const std::vector<double>& y,
                      const std::vector<std::vector<double>>& runs);
 
+/// How many runs a timing verdict or headline rests on (its configuration run again so many times).
+constexpr int kVerdictRuns = 5;
+
 /// Repeated measurements of one thing: their median (of an even count, the upper middle value), least and most.
 struct Spread {
   double median = 0, lo = 0, hi = 0;

@@ -13,6 +13,8 @@ namespace clothbench {
 /// The ease of a size [cm]: what the garment adds to the hip girth. S 4, M 8, L 12, XL 16. Throws
 /// std::invalid_argument naming the sizes for any other name.
 double size_ease_cm(const std::string& size);
+/// The sizes size_ease_cm knows, smallest first.
+std::vector<std::string> draft_sizes();
 
 /// The garment types draft_garment makes.
 std::vector<std::string> draft_types();
