@@ -24,7 +24,11 @@ void print_notes(const BodyModel& model) {
 }  // namespace
 
 BodySource::BodySource(const Scene& scene) : spec_(scene.body) {
+  if (!(spec_.scale.minCoeff() >= 0.2f && spec_.scale.maxCoeff() <= 5))
+    throw InputError(located(scene.path, 0, "body.scale: each factor must lie in [0.2, 5]"));
   if (spec_.shape == "sphere") {
+    if (spec_.scale != Vec3::Ones())
+      throw InputError(located(scene.path, 0, "body.scale needs a mesh body, not a sphere (set its radius)"));
     if (spec_.collision_triangles > 0)
       throw InputError(located(scene.path, 0, "body.collision_triangles needs a mesh body, not a sphere"));
     sphere_ = make_sphere_body(Vec3::Zero(), spec_.radius, 48, 96);
@@ -52,6 +56,11 @@ void BodySource::frame_into(const std::optional<BodyModel>& model, BodyFrame& ou
       out = model->rest();
     } else {
       model->frame_into(out, anim_, t, spec_.walk_in_place);
+    }
+    if (spec_.scale != Vec3::Ones()) {
+      out.positions = spec_.scale.asDiagonal() * out.positions;
+      out.velocities = spec_.scale.asDiagonal() * out.velocities;
+      angle_weighted_normals_into(out.positions, out.triangles, out.normals);
     }
     return;
   }

@@ -187,6 +187,8 @@ void visit_fields(B& b, V& v) {
   v(Key{"prepare_ahead", "", "the next frame prepared on a second thread"}, b.prepare_ahead, Flag{});
   v(Key{"collision_triangles", "", "> 0: colliders see a simplified copy", Hash::kWhenNonzero}, b.collision_triangles,
     Range{0, 1e8});
+  v(Key{"scale", "", "the mesh scaled along x, y, z about the origin (soles' centre)", Hash::kUnlessOne}, b.scale,
+    fields::Triple{});
   v(Key{"shape", "", "mesh or sphere"}, b.shape, fields::checked([](const std::string& x) {
       if (x != "mesh" && x != "sphere")
         throw std::invalid_argument("expected \"mesh\" or \"sphere\", got \"" + x + "\"");
@@ -380,6 +382,13 @@ struct IsChoice : std::false_type {};
 template <class P, class Q>
 struct IsChoice<fields::Choice<P, Q>> : std::true_type {};
 
+inline bool is_one(const Vec3& v) { return v == Vec3::Ones(); }
+template <class T>
+bool is_one(const T& v) {
+  if constexpr (std::is_arithmetic_v<T>) return v == T(1);
+  return false;
+}
+
 // the hashing visitor: one `section.key = value` line per row; numbers with 17 significant digits (exact for
 // float and double)
 class ConfigWriter {
@@ -394,6 +403,7 @@ class ConfigWriter {
       write(k.name, rule.print(m));
     } else {
       if (k.hash == Hash::kWhenNonzero && m == T{}) return;
+      if (k.hash == Hash::kUnlessOne && is_one(m)) return;
       write(k.name, m);
     }
   }

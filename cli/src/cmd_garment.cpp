@@ -139,24 +139,6 @@ std::vector<double> seam_offsets(const MeshedPattern& m) {
   return out;
 }
 
-// structural springs shorter than half the grid spacing (slivers: 1 mm of error there is a large strain), those
-// between two outline vertices and those from the outline inward
-struct Slivers {
-  int along = 0, inward = 0;
-};
-Slivers slivers(const MeshedPattern& m) {
-  Slivers out;
-  const ClothMesh& c = m.mesh;
-  for (Eigen::Index s = 0; s < c.springs.cols(); ++s) {
-    if (c.kind[static_cast<std::size_t>(s)] != SpringKind::kStructural) continue;
-    if (!(100 * double(c.rest_length[s]) < (0.5 - 1e-4) * m.spacing_cm)) continue;  // float rest lengths
-    const bool both = m.boundary[static_cast<std::size_t>(c.springs(0, s))] &&
-                      m.boundary[static_cast<std::size_t>(c.springs(1, s))];
-    ++(both ? out.along : out.inward);
-  }
-  return out;
-}
-
 // per seam: its two edges as the file names them
 std::vector<std::string> seam_edges(const Pattern& pat) {
   std::vector<std::string> out;
@@ -214,7 +196,7 @@ void print_text(const GarmentOptions& o, const Pattern& pat, const MeshedPattern
   const Slivers short_ones = slivers(m);
   std::printf("  structural springs under half the spacing: %d (%d between two outline vertices, %d from the outline "
               "inward)\n",
-              short_ones.along + short_ones.inward, short_ones.along, short_ones.inward);
+              short_ones.total(), short_ones.along, short_ones.inward);
   const auto& q = m.mesh.quads;
   const auto triangles = static_cast<int>((q.row(3).array() == q.row(2).array()).count());
   std::printf("  quads          %d (%d of them triangles, on the outline)\n", static_cast<int>(q.cols()), triangles);

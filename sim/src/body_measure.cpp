@@ -161,6 +161,17 @@ double armpit_height(const BodyFrame& body, double lo, double hi) {
                               " above the soles (no armpit): the arms must hang away from the torso");
 }
 
+// the top of the shoulder where a shoulder seam ends (a quarter of the shoulder width from the middle, at the arm's
+// root): going up from lo, the first section whose largest loop (the torso and its arms) is narrower than half the
+// shoulder width
+double shoulder_top(const BodyFrame& body, double lo, double hi, double width) {
+  for (double h = lo; h <= hi; h += kStep) {
+    const auto loops = cross_section(body, h);
+    if (!loops.empty() && loops.front().width() < width / 2) return h;
+  }
+  throw std::invalid_argument("measure: no shoulders between " + cm(lo) + " and " + cm(hi) + " above the soles");
+}
+
 // the upper arm's girth: the second largest loop just below the armpit (the torso is the largest)
 double upper_arm_girth(const BodyFrame& body, double h) {
   const auto loops = cross_section(body, h);
@@ -266,6 +277,9 @@ BodyMeasurements measure_body(const BodyFrame& body) {
   add("back length", neck - waist, neck, "from the neck's section down to the waist's");
   add("inseam", crotch, crotch, "from the crotch to the soles");
   add("waist to knee", waist - knee, waist, "from the waist's section down to the knee's");
+  add("chest girth", girth_at(body, armpit), armpit, "the torso's section at the armpits, shoulder blades included");
+  const double width = out["shoulder width"].value_m, top = shoulder_top(body, shoulder, neck, width);
+  add("shoulder height", top, top, "the first section above the shoulder width's narrower than half of it");
   return out;
 }
 

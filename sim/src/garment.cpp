@@ -176,4 +176,17 @@ ClothMesh build_garment(const Pattern& pat, const MeshingOptions& o, const BodyF
   return place_garment(mesh_pattern(pat, o), pat, body);
 }
 
+Slivers slivers(const MeshedPattern& m) {
+  Slivers out;
+  const ClothMesh& c = m.mesh;
+  for (Eigen::Index s = 0; s < c.springs.cols(); ++s) {
+    if (c.kind[static_cast<std::size_t>(s)] != SpringKind::kStructural) continue;
+    if (!(100 * double(c.rest_length[s]) < (0.5 - 1e-4) * m.spacing_cm)) continue;  // float rest lengths
+    const bool both =
+        m.boundary[static_cast<std::size_t>(c.springs(0, s))] && m.boundary[static_cast<std::size_t>(c.springs(1, s))];
+    ++(both ? out.along : out.inward);
+  }
+  return out;
+}
+
 }  // namespace clothbench

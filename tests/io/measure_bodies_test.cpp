@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
@@ -26,15 +27,13 @@ void expect_a_standing_body(const BodyMeasurements& m, const std::string& which)
   for (const auto& x : m.all)
     std::printf("[ measure ] %s %s %.1f cm at %.1f cm\n", which.c_str(), x.name.c_str(), 100 * x.value_m,
                 100 * x.height_m);
-  const char* upwards[] = {"knee girth", "crotch height", "hip girth",  "waist girth",
-                           "bust girth", "armpit height", "neck girth", "stature"};
+  const char* upwards[] = {"knee girth",    "crotch height",   "hip girth",  "waist girth", "bust girth",
+                           "armpit height", "shoulder height", "neck girth", "stature"};
   for (std::size_t i = 0; i + 1 < std::size(upwards); ++i)
     EXPECT_LT(m[upwards[i]].height_m, m[upwards[i + 1]].height_m) << which << ": " << upwards[i];
-  const std::pair<const char*, const char*> smaller[] = {{"waist girth", "hip girth"},
-                                                         {"waist girth", "bust girth"},
-                                                         {"neck girth", "waist girth"},
-                                                         {"knee girth", "thigh girth"},
-                                                         {"upper arm girth", "thigh girth"}};
+  const std::pair<const char*, const char*> smaller[] = {
+      {"waist girth", "hip girth"},  {"waist girth", "bust girth"},      {"neck girth", "waist girth"},
+      {"knee girth", "thigh girth"}, {"upper arm girth", "thigh girth"}, {"waist girth", "chest girth"}};
   for (const auto& [a, b] : smaller) EXPECT_LT(m[a].value_m, m[b].value_m) << which << ": " << a << " < " << b;
   EXPECT_GT(m["inseam"].value_m, 0.35 * m["stature"].value_m) << which;
 }
@@ -51,10 +50,18 @@ TEST(MeasureBodies, DebianHumanAndItsScaledCopy) {
   for (const auto& x : m.all) EXPECT_NEAR(b[x.name].value_m / x.value_m, 1.1, 0.03) << x.name;
 }
 
-TEST(MeasureBodies, TheWalkingBodysRestPose) {
-  const std::string path = data_path("body/mh_female_walk.glb");
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "walking body absent from the data root";
-  expect_a_standing_body(measure_body(load_body(path).rest()), "walking body");
+// the walking body's rest pose, and the taller body made from the same MakeHuman sources (tools/make_body.py): the
+// same mesh, so the same landmarks, higher
+TEST(MeasureBodies, TheMakeHumanBodies) {
+  const std::string path = data_path("body/mh_female_walk.glb"), tall_path = data_path("body/mh_female_tall.obj");
+  if (!std::filesystem::exists(path) || !std::filesystem::exists(tall_path))
+    GTEST_SKIP() << "MakeHuman bodies absent from the data root";
+  const BodyMeasurements walking = measure_body(load_body(path).rest());
+  expect_a_standing_body(walking, "walking body");
+  const BodyMeasurements tall = measure_body(load_body(tall_path).rest());
+  expect_a_standing_body(tall, "tall body");
+  EXPECT_GT(tall["stature"].value_m, walking["stature"].value_m + 0.1);
+  EXPECT_GT(tall["inseam"].value_m, walking["inseam"].value_m + 0.05);
 }
 
 // a skirt drafted from Debian's human (Durupinar section 2): two panels sewn at the sides whose widths add up to the
@@ -93,6 +100,44 @@ TEST(Draft, ASkirtHasTheBodysGirthsPlusItsEase) {
   EXPECT_THROW(size_ease_cm("XXL"), std::invalid_argument);
   EXPECT_EQ(size_ease_cm("S"), 4);
   EXPECT_EQ(size_ease_cm("XL"), 16);
+}
+
+// a shirt and a dress drafted from Debian's human: a front and a back panel sewn at the sides and shoulders, as wide
+// as the chest girth at the armpits plus the ease at the side seam's top, the hip girth plus the ease lower down (the
+// dress flared 1.2 at the hem), their shoulder seams cut above the shoulders' top; every seam's two edges as long
+void expect_a_bodice(const std::string& type, const BodyFrame& body, const BodyMeasurements& m, double ease) {
+  const Pattern p = draft_garment(type, body, m, ease);
+  ASSERT_EQ(p.panels.size(), 2u) << type;
+  ASSERT_EQ(p.seams.size(), 4u) << type;
+  for (const Seam& s : p.seams)
+    EXPECT_NEAR(edge_length_cm(p.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a),
+                edge_length_cm(p.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b), 1e-6)
+        << type << ": " << edge_label(p, s.panel_a, s.edge_a);
+  const Panel& front = p.panels[0];
+  double hem = 0, chest = 0, top = 0;
+  for (const Vec2d& q : front.outline) {
+    if (q.y() == 0) hem = std::max(hem, 4 * std::abs(q.x()));
+    top = std::max(top, q.y());
+  }
+  const auto side_top = front.outline[static_cast<std::size_t>(front.edge_begin[2])];  // the armhole's start
+  chest = 4 * side_top.x();
+  EXPECT_NEAR(chest, 100 * m["chest girth"].value_m + ease, 1e-6) << type;
+  const double hip = 100 * m["hip girth"].value_m + ease;
+  EXPECT_NEAR(hem, type == "dress" ? 1.2 * hip : std::max(hip, chest), 1e-6) << type;
+  // the panel's top (its neck corners) above the shoulders' top, seen from the hem's height
+  const Box3 box = bounding_box(body.positions);
+  const double hem_h = box.min.y() + front.placement.anchor.y() * box.size().y();
+  EXPECT_GT(hem_h + top / 100, m["shoulder height"].height_m) << type;
+}
+
+TEST(Draft, AShirtAndADressHaveTheChestAndHipGirthsPlusTheEase) {
+  if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const BodyFrame rest = load_body("debian:human").rest();
+  const BodyMeasurements m = measure_body(rest);
+  for (const char* type : {"shirt", "dress"})
+    for (const double ease : {4.0, 16.0}) expect_a_bodice(type, rest, m, ease);
+  const std::vector<std::string> types = draft_types();
+  EXPECT_EQ(types, (std::vector<std::string>{"skirt", "shirt", "dress"}));
 }
 
 // the CLI: a standing body prints its measurements and drafts a garment into a pattern file; a closed mesh that is no

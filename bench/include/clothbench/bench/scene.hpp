@@ -30,6 +30,7 @@ struct BodySpec {
   int collision_triangles = 0;        ///< > 0: the colliders see a copy simplified to about this many triangles
                                       ///< (BodyModel::simplified); the oracle measures against the exact body
   double skin_mm = 0;              ///< the body is answered this much thicker in every phase (BodyBetweenFrames) [mm]
+  Vec3 scale = Vec3::Ones();       ///< the mesh scaled along x, y, z about the origin (a broader or slimmer body)
   std::string shape = "mesh";      ///< "mesh" or "sphere"
   Real radius = 0.25f;             ///< sphere radius [m]
   Vec3 center = Vec3(0, 0.5f, 0);  ///< sphere centre at t = 0 [m]

@@ -33,7 +33,8 @@ struct Measurement {
 };
 
 /// The standing body's measurements (stature; neck, bust, under-bust, waist, hip, thigh, knee and upper-arm girths;
-/// the heights of those landmarks and of the crotch and armpit; shoulder width; back length, inseam, waist to knee).
+/// the heights of those landmarks and of the crotch and armpit; shoulder width; back length, inseam, waist to knee;
+/// the chest girth at the armpits and the height of the shoulders' top where a shoulder seam ends).
 /// The body stands upright with its arms away from its sides below the armpit (the rest poses here: A- or T-pose).
 /// Throws std::invalid_argument naming what is missing when a landmark cannot be found (an open mesh, a body whose
 /// legs do not part, arms held against the torso).

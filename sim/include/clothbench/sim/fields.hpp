@@ -20,6 +20,7 @@ namespace clothbench::fields {
 enum class Hash {
   kAlways,
   kWhenNonzero,  ///< only when set: a key added after hashes were published leaves their default hashes as they were
+  kUnlessOne,    ///< as kWhenNonzero for a factor, whose unset value is 1 (every component of a triple)
   kNever,        ///< a label or preset whose effects the other rows carry
 };
 

@@ -34,7 +34,7 @@ struct Panel {
   std::vector<Vec2d> outline;   ///< outline points [cm], not repeating the first; >= 3
   std::vector<int> edge_begin;  ///< outline index where each edge starts (ascending, first 0)
   Placement placement;
-  std::vector<int> attached_edges;  ///< edges whose mesh vertices are bound to the body (Durupinar 3.2)
+  std::vector<int> attached_edges;      ///< edges whose mesh vertices are bound to the body (Durupinar 3.2)
   std::vector<std::string> edge_names;  ///< as written in the pattern file, one per edge (empty: unnamed)
 
   int edge_count() const { return static_cast<int>(edge_begin.size()); }
@@ -120,6 +120,14 @@ std::string edge_label(const Pattern& pattern, int panel, int edge);
 /// name with their lengths (the seam spreads the shorter edge's partners over the longer one's length, so the
 /// garment closes only stretched or gathered there).
 std::vector<std::string> seam_length_warnings(const Pattern& pattern, double tolerance = 0.05);
+
+/// Structural springs shorter than half the grid spacing (slivers: a millimetre of error there is a large strain):
+/// those joining two outline vertices, and those from the outline inward.
+struct Slivers {
+  int along = 0, inward = 0;
+  int total() const { return along + inward; }
+};
+Slivers slivers(const MeshedPattern& m);
 
 /// Meshes with `options`: a fixed spacing, or the spacing whose vertex count is closest to the target.
 MeshedPattern mesh_pattern(const Pattern& pattern, const MeshingOptions& options);
