@@ -132,6 +132,7 @@ ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
     options.target_vertices = g.vertices;
     options.spacing_cm = g.vertices > 0 ? 0 : g.spacing_cm;
     options.attach = g.attach;
+    options.on_grid = g.on_grid;
     try {
       ClothMesh garment = build_garment(pattern, options, body);
       if (g.jitter_mm > 0) {  // a jittered placement: one random offset for the whole garment, from its seed

@@ -216,6 +216,8 @@ void visit_fields(G& g, V& v) {
   v(Key{"vertices", "", "target vertex count; 0: use spacing_cm"}, g.vertices, Range{0, 1e6});
   v(Key{"spacing_cm", "cm", "grid spacing when vertices is 0"}, g.spacing_cm, Range{0.05, 100});
   v(Key{"attach", "", "honour the pattern's attached edges"}, g.attach, Flag{});
+  v(Key{"on_grid", "", "Durupinar's construction: the outline drawn on the grid", Hash::kWhenNonzero}, g.on_grid,
+    Flag{});
   v(Key{"jitter_mm", "mm", "> 0: the placed garment moved by a random offset"}, g.jitter_mm, Range{0, 100});
   v(Key{"seed", "", "the jitter's random seed"}, g.seed, Range{0, 1e9});
 }

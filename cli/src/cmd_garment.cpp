@@ -24,6 +24,7 @@ struct GarmentOptions {
   std::string file;
   int vertices = 0;         // target vertex count; 0 = use the spacing
   double spacing_cm = 2.0;  // grid spacing when no target is given [cm]
+  bool on_grid = false;     // Durupinar's construction (MeshingOptions::on_grid)
   bool json = false;
   std::string png;
   std::string on;  // a body file: place the garment on its rest pose and report the placement
@@ -221,6 +222,7 @@ int run_garment(const GarmentOptions& o) {
   if (o.vertices == 0 && !(o.spacing_cm > 0)) throw InputError("--spacing must be > 0 cm");
   const Pattern pat = load_pattern(o.file);
   MeshingOptions mo;
+  mo.on_grid = o.on_grid;
   if (o.vertices > 0)
     mo.target_vertices = o.vertices;
   else
@@ -270,6 +272,9 @@ void add_garment_command(CLI::App& app, Action& action) {
   cmd->add_option("--vertices", opts->vertices, "Target vertex count of the whole garment (within a few per cent)");
   cmd->add_option("--spacing", opts->spacing_cm, "Grid spacing [cm], used when --vertices is not given")
       ->capture_default_str();
+  cmd->add_flag("--on-grid", opts->on_grid,
+                "Durupinar's construction: the outline drawn on the grid (Bresenham lines, a 4-neighbour fill), every "
+                "vertex a grid node");
   cmd->add_flag("--json", opts->json, "Print JSON (keys panels, vertices, springs, seams, seam_pairs, quads)");
   cmd->add_option("--png", opts->png,
                   "Draw the meshed panels and seams into this PNG file (with --on: the garment placed on the body)");

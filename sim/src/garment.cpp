@@ -66,19 +66,21 @@ void pair_seams(const Pattern& pat, const std::vector<PanelGrid>& grids, const s
 
 }  // namespace
 
-MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach) {
+MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_grid) {
   validate_pattern(pat);
   if (!(h > 0)) throw std::invalid_argument("pattern " + pat.name + ": grid spacing must be > 0");
   MeshedPattern out;
   out.spacing_cm = h;
   std::vector<PanelGrid> grids;
-  for (const auto& p : pat.panels) grids.push_back(grid_panel(p, h));
-  align_seam_vertices(pat, h, grids);
+  std::vector<Panel> drawn(pat.panels);  // on the grid: each panel's outline as drawn there
+  for (std::size_t pi = 0; pi < pat.panels.size(); ++pi)
+    grids.push_back(on_grid ? grid_panel_on_grid(pat.panels[pi], h, drawn[pi]) : grid_panel(pat.panels[pi], h));
+  if (!on_grid) align_seam_vertices(pat, h, grids);  // on the grid, the vertices stay on their nodes
   std::vector<int> offset;
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
     const Panel& p = pat.panels[pi];
     offset.push_back(out.mesh.vertex_count());
-    out.mesh.append(panel_mesh(p, grids[pi], h));
+    out.mesh.append(panel_mesh(drawn[pi], grids[pi], h));
     for (const auto& q : grids[pi].uv) {
       out.uv.conservativeResize(2, out.uv.cols() + 1);
       out.uv.col(out.uv.cols() - 1) = q;
@@ -95,7 +97,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach) {
 }
 
 MeshedPattern mesh_pattern(const Pattern& pat, const MeshingOptions& o) {
-  if (o.spacing_cm > 0) return mesh_pattern(pat, o.spacing_cm, o.attach);
+  if (o.spacing_cm > 0) return mesh_pattern(pat, o.spacing_cm, o.attach, o.on_grid);
   if (o.target_vertices < 8)
     throw std::invalid_argument("pattern " + pat.name + ": need a spacing or >= 8 target vertices");
   // area / spacing^2 ~ vertices: start there (each panel's area counts positive, whichever way its outline
@@ -108,7 +110,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, const MeshingOptions& o) {
   double best_err = 1e300, best_h = std::sqrt(area / o.target_vertices);
   const auto close_enough = [&](double err) { return err <= 0.01 * o.target_vertices; };
   const auto mesh_at = [&](double h) {
-    MeshedPattern m = mesh_pattern(pat, h, o.attach);
+    MeshedPattern m = mesh_pattern(pat, h, o.attach, o.on_grid);
     const int n = m.mesh.vertex_count();
     const double err = std::abs(n - o.target_vertices);
     if (err < best_err) best_err = err, best_h = h, best = std::move(m);

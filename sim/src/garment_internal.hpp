@@ -41,6 +41,11 @@ struct PanelGrid {
 
 // the panel's grid at spacing h: nodes inside the outline, the ring around them snapped onto it
 PanelGrid grid_panel(const Panel& p, double h);
+// The panel's grid at spacing h by Durupinar's construction (section 2, steps 1-6): the outline's points snapped to
+// their nearest grid nodes and joined by Bresenham lines, the nodes inside them found by a 4-neighbour fill, so that
+// every vertex is a grid node and every structural spring a spacing long; the outline is followed to within half a
+// spacing. `staircase` gets the panel with the outline as drawn on the grid (its cells' inside test).
+PanelGrid grid_panel_on_grid(const Panel& p, double h, Panel& staircase);
 // A new boundary vertex at pattern point `at` on the outline between boundary neighbours u and w: the cell
 // that joins them is cut into a triangle and the rest, their spring split in two, and the new vertex joined
 // across the cell (where no cell joins them, the triangle u, new, w). Returns its index.

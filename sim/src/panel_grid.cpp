@@ -51,18 +51,35 @@ Vec2d clear_of_outline(const std::vector<Vec2d>& outline, const Vec2d& q, const 
   return at.dist > c.dist && inside(outline, moved) ? moved : q;  // `at` is where `moved` is
 }
 
-// Grid nodes inside the outline, and the ring around them snapped onto the outline.
-void place_grid_vertices(const Panel& p, double h, PanelGrid& g, std::vector<int>& id, int& nx, int& ny) {
+// The panel's grid: nodes origin + h (i, j), 0 <= i < nx, 0 <= j < ny, a node's index j nx + i.
+struct GridFrame {
+  Vec2d origin;
+  double h = 0;
+  int nx = 0, ny = 0;
+  Vec2d node(int i, int j) const { return origin + h * Vec2d(i, j); }
+};
+
+// The grid over the outline's box and a node beyond it on every side, centred on the box, so mirrored panels get
+// mirrored vertices.
+GridFrame grid_frame(const Panel& p, double h) {
   Vec2d lo = p.outline[0], hi = p.outline[0];
   for (const auto& q : p.outline) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
   // grid cells across the box; a spacing that divides it exactly counts exactly, not one more for
   // the rounding of the division (that would shift the centred grid by h/2 off the outline)
   auto cells = [&](double extent) { return static_cast<int>(std::ceil(extent / h - kOnOutline)); };
-  nx = cells(hi.x() - lo.x()) + 3;
-  ny = cells(hi.y() - lo.y()) + 3;
-  // the grid is centred on the outline's box, so mirrored panels get mirrored vertices
-  const Vec2d origin = 0.5 * (lo + hi) - 0.5 * h * Vec2d(nx - 1, ny - 1);
-  auto node = [&](int i, int j) -> Vec2d { return origin + h * Vec2d(i, j); };
+  GridFrame f;
+  f.h = h;
+  f.nx = cells(hi.x() - lo.x()) + 3;
+  f.ny = cells(hi.y() - lo.y()) + 3;
+  f.origin = 0.5 * (lo + hi) - 0.5 * h * Vec2d(f.nx - 1, f.ny - 1);
+  return f;
+}
+
+// Grid nodes inside the outline, and the ring around them snapped onto the outline.
+void place_grid_vertices(const Panel& p, const GridFrame& f, PanelGrid& g, std::vector<int>& id) {
+  const double h = f.h;
+  const int nx = f.nx, ny = f.ny;
+  auto node = [&](int i, int j) { return f.node(i, j); };
   id.assign(static_cast<std::size_t>(nx * ny), -1);
   // inside nodes farther than h/4 from the outline are kept (those nearer than h/2 moved to h/2 where they can
   // be: clear_of_outline); nodes on the outline (within rounding: a spacing that divides a straight edge's
@@ -113,12 +130,12 @@ bool spans_a_hollow(const Panel& p, const PanelGrid& g, const std::array<int, 4>
 
 namespace garment_detail {
 
-PanelGrid grid_panel(const Panel& p, double h) {
-  PanelGrid g;
-  g.edge_vertices.resize(static_cast<std::size_t>(p.edge_count()));
-  std::vector<int> id;
-  int nx = 0, ny = 0;
-  place_grid_vertices(p, h, g, id, nx, ny);
+namespace {
+
+// Springs and cells between the kept grid nodes `id` (-1: not kept) of panel p.
+void connect_grid(const Panel& p, const GridFrame& f, const std::vector<int>& id, PanelGrid& g) {
+  const int nx = f.nx, ny = f.ny;
+  const double h = f.h;
   // springs and quads between kept grid neighbours
   auto at = [&](int i, int j) {
     return (i < 0 || j < 0 || i >= nx || j >= ny) ? -1 : id[static_cast<std::size_t>(j * nx + i)];
@@ -151,6 +168,131 @@ PanelGrid grid_panel(const Panel& p, double h) {
       if (kept - c.begin() == 3) c[3] = c[2];
       if (kept - c.begin() >= 3 && !spans_a_hollow(p, g, c, h)) g.quads.push_back(c);
     }
+}
+
+// The grid node for a pattern point: the nearest row, and of the two nearest columns the one farther from the grid's
+// middle, so that a panel drawn on the grid is no narrower anywhere than its pattern (a waistband rounded in would
+// not close round the waist)
+std::array<int, 2> nearest_node(const GridFrame& f, const Vec2d& q) {
+  const Vec2d at = (q - f.origin) / f.h;
+  const double middle = 0.5 * (f.nx - 1),
+               column = at.x() > middle ? std::ceil(at.x() - 1e-9) : std::floor(at.x() + 1e-9);
+  return {static_cast<int>(column), static_cast<int>(std::lround(at.y()))};
+}
+
+// Bresenham's line from node a to node b (8-connected), b included, a not. It is drawn upwards (rightwards when
+// level) from whichever end is lower and with the steps' sizes alone (their signs applied after), so that a line
+// and its mirror image, and the same line drawn either way, take the same nodes: a seam's two mirrored edges then
+// lie on matching staircases, their pairs a spacing apart along both
+std::vector<std::array<int, 2>> bresenham(const std::array<int, 2>& a, const std::array<int, 2>& b) {
+  const bool down = b[1] < a[1] || (b[1] == a[1] && b[0] < a[0]);
+  const std::array<int, 2> from = down ? b : a, to = down ? a : b;
+  const int dx = std::abs(to[0] - from[0]), dy = to[1] - from[1], sx = to[0] < from[0] ? -1 : 1;
+  std::vector<std::array<int, 2>> path{from};
+  int x = 0, y = 0, err = dx - dy;
+  while (x != dx || y != dy) {
+    const int e2 = 2 * err;
+    if (e2 > -dy) err -= dy, ++x;
+    if (e2 < dx) err += dx, ++y;
+    path.push_back({from[0] + sx * x, from[1] + y});
+  }
+  if (down) std::reverse(path.begin(), path.end());
+  return {path.begin() + 1, path.end()};
+}
+
+}  // namespace
+
+PanelGrid grid_panel(const Panel& p, double h) {
+  PanelGrid g;
+  g.edge_vertices.resize(static_cast<std::size_t>(p.edge_count()));
+  std::vector<int> id;
+  const GridFrame f = grid_frame(p, h);
+  place_grid_vertices(p, f, g, id);
+  connect_grid(p, f, id, g);
+  return g;
+}
+
+namespace {
+
+// Durupinar's steps 1-4: the outline's points on grid nodes (nearest_node), joined by Bresenham lines, their nodes
+// kept (`id`) as boundary vertices; each edge's nodes, in order, make its run, at the arc fractions of the staircase
+// drawn for it (a seam's mirrored edges, drawn alike, then pair node for node). `staircase` gets the outline drawn.
+void draw_outline(const Panel& p, const GridFrame& f, PanelGrid& g, std::vector<int>& id, Panel& staircase) {
+  staircase = p;
+  staircase.outline.clear();
+  staircase.edge_begin.clear();
+  const int n = static_cast<int>(p.outline.size());
+  const auto vertex = [&](const std::array<int, 2>& node) {
+    const auto k = static_cast<std::size_t>(node[1] * f.nx + node[0]);
+    if (id[k] < 0) {
+      id[k] = static_cast<int>(g.uv.size());
+      g.uv.push_back(f.node(node[0], node[1]));
+      g.boundary.push_back(1);
+    }
+    return id[k];
+  };
+  std::array<int, 2> at = nearest_node(f, p.outline[0]);
+  for (int e = 0; e < p.edge_count(); ++e) {
+    const int s0 = p.edge_begin[static_cast<std::size_t>(e)];
+    const int s1 = e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n;
+    std::vector<std::array<int, 2>> drawn{at};
+    for (int s = s0; s < s1; ++s)
+      for (const auto& node :
+           bresenham(drawn.back(), nearest_node(f, p.outline[static_cast<std::size_t>((s + 1) % n)])))
+        drawn.push_back(node);
+    at = drawn.back();
+    std::vector<double> arc{0};
+    for (std::size_t k = 1; k < drawn.size(); ++k)
+      arc.push_back(arc.back() + std::hypot(drawn[k][0] - drawn[k - 1][0], drawn[k][1] - drawn[k - 1][1]));
+    auto& run = g.edge_vertices[static_cast<std::size_t>(e)];
+    for (std::size_t k = 0; k < drawn.size(); ++k) {
+      const int v = vertex(drawn[k]);
+      if (std::none_of(run.begin(), run.end(), [&](const auto& tv) { return tv.second == v; }))
+        run.push_back({arc.back() > 0 ? arc[k] / arc.back() : 0.0, v});
+    }
+    std::sort(run.begin(), run.end());
+    staircase.edge_begin.push_back(static_cast<int>(staircase.outline.size()));
+    for (std::size_t k = 0; k + 1 < drawn.size(); ++k) staircase.outline.push_back(f.node(drawn[k][0], drawn[k][1]));
+  }
+}
+
+// Durupinar's steps 5-6: the nodes the outside reaches 4-neighbour from the grid's corner (the grid has a column and
+// a row clear of the outline all round) without crossing the lines are outside; every other node is kept, inside (a
+// 4-neighbour fill cannot pass between two diagonal neighbours of a line)
+void fill_inside(const GridFrame& f, PanelGrid& g, std::vector<int>& id) {
+  const auto index = [&](int i, int j) { return static_cast<std::size_t>(j * f.nx + i); };
+  std::vector<std::uint8_t> outside(id.size(), 0);
+  std::vector<std::array<int, 2>> stack{{0, 0}};
+  outside[0] = 1;
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    for (const auto& [di, dj] : {std::array<int, 2>{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+      const int u = i + di, w = j + dj;
+      if (u < 0 || w < 0 || u >= f.nx || w >= f.ny || outside[index(u, w)] || id[index(u, w)] >= 0) continue;
+      outside[index(u, w)] = 1;
+      stack.push_back({u, w});
+    }
+  }
+  for (int j = 0; j < f.ny; ++j)
+    for (int i = 0; i < f.nx; ++i) {
+      if (outside[index(i, j)] || id[index(i, j)] >= 0) continue;
+      id[index(i, j)] = static_cast<int>(g.uv.size());
+      g.uv.push_back(f.node(i, j));
+      g.boundary.push_back(0);
+    }
+}
+
+}  // namespace
+
+PanelGrid grid_panel_on_grid(const Panel& p, double h, Panel& staircase) {
+  const GridFrame f = grid_frame(p, h);
+  PanelGrid g;
+  g.edge_vertices.resize(static_cast<std::size_t>(p.edge_count()));
+  std::vector<int> id(static_cast<std::size_t>(f.nx * f.ny), -1);
+  draw_outline(p, f, g, id, staircase);
+  fill_inside(f, g, id);
+  connect_grid(staircase, f, id, g);
   return g;
 }
 

@@ -261,6 +261,56 @@ TEST(Garment, NoCellSpansTheHollowOfANeckline) {
   }
 }
 
+// A panel symmetric about x = 0 with slanted sides, a bend and a curved top (a skirt's or a bodice's), and its twin
+// turned round, sewn side to side as the drafted garments are.
+Pattern slanted_pair() {
+  Panel p;
+  p.name = "front";
+  p.outline = {{-30, 0}, {30, 0}, {24, 20}, {19, 45}, {8, 52}, {0, 47}, {-8, 52}, {-19, 45}, {-24, 20}};
+  p.edge_begin = {0, 1, 3, 7};  // hem, side_r (with its bend), top, side_l
+  Pattern pat;
+  pat.name = "pair";
+  pat.panels = {p, p};
+  pat.panels[1].name = "back";
+  pat.seams = {{0, 1, 1, 3, true}, {0, 3, 1, 1, true}};
+  return pat;
+}
+
+// Durupinar's construction (section 2): every vertex a grid node, so every structural spring one spacing and every
+// shear spring a diagonal; the two mirrored sides drawn as matching staircases, every vertex paired with none left
+// over
+TEST(Garment, OnTheGridEveryVertexIsAGridNodeAndMirroredSeamsPairUp) {
+  const Pattern pat = slanted_pair();
+  for (const double h : {1.7, 2.9, 4.3}) {
+    const MeshedPattern m = mesh_pattern(pat, h, true, true);
+    const ClothMesh& c = m.mesh;
+    for (Eigen::Index s = 0; s < c.springs.cols(); ++s) {
+      const double expected = c.kind[static_cast<std::size_t>(s)] == SpringKind::kStructural ? h
+                              : c.kind[static_cast<std::size_t>(s)] == SpringKind::kShear    ? h * std::sqrt(2.0)
+                                                                                             : 2 * h;
+      EXPECT_NEAR(100 * c.rest_length[s], expected, 1e-4) << "spring " << s << ", spacing " << h;
+    }
+    EXPECT_EQ(slivers(m).total(), 0);
+    ASSERT_EQ(m.seam_pair_count.size(), 2u);
+    EXPECT_EQ(m.seam_pair_count[0], m.seam_pair_count[1]);
+    EXPECT_GE(m.seam_pair_count[0], static_cast<int>(45 / h));
+    for (int loose : m.seam_loose_count) EXPECT_EQ(loose, 0) << "spacing " << h;
+    for (double offset : m.seam_offset_cm) EXPECT_LT(offset, 1e-9) << "spacing " << h;
+    // the drawn panel follows its outline: its points on nodes a column outward and half a row off at most, the
+    // lines between them within half a diagonal of those
+    for (int v = 0; v < c.vertex_count(); ++v) {
+      if (!m.boundary[static_cast<std::size_t>(v)]) continue;
+      EXPECT_LT(distance_to_outline(pat.panels[0].outline, m.uv.col(v)), 1.62 * h) << "spacing " << h;
+    }
+    // the ring mesher, for comparison: vertices on the outline itself
+    std::printf("[ on grid ] spacing %.1f cm: %d vertices on the grid, %d with the ring snapped onto the outline\n", h,
+                c.vertex_count(), mesh_pattern(pat, h).mesh.vertex_count());
+  }
+  // a strip thinner than a spacing is drawn a cell tall (the grid is centred on its box, between two rows)
+  const MeshedPattern strip = mesh_pattern(two_panel(10, 0.5), 5, true, true);
+  EXPECT_GT(strip.mesh.quads.cols(), 0);
+}
+
 TEST(Garment, RejectsBadPatterns) {
   Pattern pat = two_panel(40, 50);
   pat.seams.push_back(pat.seams[0]);

@@ -47,6 +47,7 @@ struct GarmentSpec {
   int vertices = 0;        ///< target vertex count (0: use spacing_cm)
   double spacing_cm = 2;   ///< grid spacing when vertices = 0 [cm]
   bool attach = true;      ///< honour the pattern's attached edges (Durupinar 3.2)
+  bool on_grid = false;    ///< Durupinar's construction: the outline drawn on the grid (MeshingOptions::on_grid)
   double jitter_mm = 0;    ///< > 0: the placed garment moved by a random offset, each axis uniform in +-jitter_mm
   int seed = 0;            ///< the jitter's random seed (deterministic: one seed, one placement)
 };

@@ -61,6 +61,10 @@ struct MeshingOptions {
   double spacing_cm = 0;
   int target_vertices = 0;
   bool attach = true;  ///< honour the panels' attached edges
+  /// Durupinar's construction (section 2): the outline drawn on the grid by Bresenham lines between its points
+  /// snapped to grid nodes and filled 4-neighbour, every vertex a grid node (no spring under a spacing, the outline
+  /// jagged by up to half a spacing), seams paired as drawn; false: the ring snapped onto the outline (mesh_pattern)
+  bool on_grid = false;
 };
 
 /// The meshed pattern before placement: the cloth with 2D pattern coordinates kept.
@@ -108,7 +112,7 @@ bool outline_self_intersects(const std::vector<Vec2d>& outline);
 /// outline. Springs (structural, shear, flexion) join kept grid neighbours, rest lengths from the
 /// 2D pattern; quads where all four corners are kept, triangles (quads repeating their third corner)
 /// where three are.
-MeshedPattern mesh_pattern(const Pattern& pattern, double spacing_cm, bool attach = true);
+MeshedPattern mesh_pattern(const Pattern& pattern, double spacing_cm, bool attach = true, bool on_grid = false);
 
 /// The length of edge `e` of a panel along its outline [cm].
 double edge_length_cm(const Panel& panel, int e);
