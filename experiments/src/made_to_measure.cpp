@@ -21,12 +21,27 @@ namespace {
 struct Body {
   const char* label;
   const char* file;
+  const char* scale;  // body.scale, or "" for the body as it is
 };
-// the bodies this project ships or finds, each in its rest pose
-const Body kBodies[] = {{"Debian's human (human.zae)", "debian:human"},
-                        {"the walking body (MakeHuman), rest pose", "data:body/mh_female_walk.glb"}};
+// the bodies this project ships, each in its rest pose: two MakeHuman shapes (the walking body and a taller one), a
+// broader body from another source, and a slimmer one made by scaling
+const Body kBodies[] = {
+    {"Debian's human", "debian:human", ""},
+    {"walking body (MakeHuman)", "data:body/mh_female_walk.glb", ""},
+    {"tall MakeHuman body", "data:body/mh_female_tall.obj", ""},
+    {"GarmentCode's mean female", "data:garments/garmentcode/mean_female.obj", ""},
+    {"walking body, 0.9 across", "data:body/mh_female_walk.glb", "[0.9, 1, 0.9]"},
+};
 // the landmarks the fit is measured at
-const char* const kLandmarks[] = {"waist girth", "hip girth"};
+const char* const kLandmarks[] = {"bust girth", "waist girth", "hip girth"};
+// a garment type: its vertex count (its dressing scene's; the shirt's raised to the skirt's), and the landmark
+// where its size's ease tells, at which the fit is judged (the shirt ends above the hip)
+struct Type {
+  const char* name;
+  int vertices;
+  int judged_at;  // index into kLandmarks
+};
+const Type kTypes[] = {{"skirt", 600, 2}, {"shirt", 600, 0}, {"dress", 800, 2}};
 
 // how far the cloth sits off the body round one landmark, as a tape round the garment there would show it: the
 // points where the cloth's structural springs cross the landmark's height, their mean and largest distance outside
@@ -57,25 +72,48 @@ Gap gap_at(const Oracle& oracle, const ClothMesh& cloth, double height_m) {
   return g;
 }
 
-// one row: a body, a garment type and a size
+// the two meshers (garment.on_grid): the ring of grid nodes snapped onto the outline, or Durupinar's construction
+const char* mesher(bool on_grid) { return on_grid ? "on the grid" : "ring"; }
+
+// one row: a body, a garment type, a mesher and a size
 struct Row {
-  std::string body, type, size;
+  std::string body;
+  const Type* type;
+  bool on_grid = false;
+  std::string size;
   bool meets = false;
   std::vector<Gap> gaps;  // one per landmark
+  Slivers slivers;
+  double spacing_cm = 0;  // the grid's
 };
 
-std::vector<std::string> overrides(const ExperimentContext& ctx, const Body& b, const std::string& type,
+std::vector<std::string> overrides(const ExperimentContext& ctx, const Body& b, const Type& type, bool on_grid,
                                    const std::string& size) {
-  std::vector<std::string> sets{"body.file=" + std::string(b.file), "garment.file=", "garment.fit=" + type,
-                                "garment.size=" + size, "garment.vertices=" + std::to_string(ctx.quick() ? 150 : 600)};
+  std::vector<std::string> sets{"body.file=" + std::string(b.file),
+                                "garment.file=",
+                                "garment.fit=" + std::string(type.name),
+                                "garment.size=" + size,
+                                "garment.vertices=" + std::to_string(ctx.quick() ? 150 : type.vertices),
+                                "garment.on_grid=" + std::string(on_grid ? "true" : "false"),
+                                "solver.face_queries=true"};
+  if (*b.scale) sets.push_back("body.scale=" + std::string(b.scale));
   if (ctx.quick()) sets.push_back("stop.max_iterations=40");
   return sets;
 }
 
 MarkdownTable table() {
-  std::vector<std::string> head{
-      "body",     "garment", "size",    "ease at the hip [cm]",     "waist / hip girth [cm]",
-      "vertices", "sewn",    "settled", "iterations (sew + drape)", "wall to dressed [s] (set-up incl.)"};
+  std::vector<std::string> head{"body",
+                                "garment",
+                                "mesh",
+                                "size",
+                                "ease [cm]",
+                                "stature; bust / waist / hip girth [cm]",
+                                "vertices",
+                                "springs under half a spacing",
+                                "sewn",
+                                "settled",
+                                "iterations (sew + drape)",
+                                "wall to dressed [s] (set-up incl.)"};
   for (const char* l : kLandmarks)
     head.push_back("gap at the " + std::string(l).substr(0, std::string(l).find(' ')) + ": mean / max [mm] (points)");
   for (const char* h :
@@ -84,19 +122,29 @@ MarkdownTable table() {
   return MarkdownTable(head);
 }
 
+// the garment the run drafted and meshed, again (the same body, pattern and target vertex count give the same mesh)
+MeshedPattern drafted(const RunResult& r, const BodyMeasurements& m, const Type& type, const std::string& size,
+                      int vertices, bool on_grid) {
+  return mesh_pattern(draft_garment(type.name, r.final_body, m, size_ease_cm(size)),
+                      MeshingOptions{0, vertices, true, on_grid});
+}
+
 // the row's cells, and what the summary gathers from it
-std::vector<std::string> cells(const Body& b, const std::string& type, const std::string& size, const RunResult& r,
-                               const BodyMeasurements& m, Row& row) {
+std::vector<std::string> cells(const Body& b, const RunResult& r, const BodyMeasurements& m, Row& row) {
+  std::string girths = num(100 * m["stature"].value_m, 0) + "; ";
+  for (const char* l : kLandmarks) girths += (l == kLandmarks[0] ? "" : " / ") + num(100 * m[l].value_m, 1);
   std::vector<std::string> c{b.label,
-                             type,
-                             size,
-                             num(size_ease_cm(size), 0),
-                             num(100 * m["waist girth"].value_m, 1) + " / " + num(100 * m["hip girth"].value_m, 1),
-                             std::to_string(r.vertices)};
+                             row.type->name,
+                             mesher(row.on_grid),
+                             row.size,
+                             num(size_ease_cm(row.size), 0),
+                             girths,
+                             std::to_string(r.vertices),
+                             std::to_string(row.slivers.total())};
   if (r.divergence) {
     c.push_back("diverged at iteration " + std::to_string(r.divergence->iteration));
-    c.resize(c.size() + 10, "-");  // settled to strain: the columns up to the verdict
-    c.push_back("no: diverged");
+    c.resize(table().columns(), "-");  // settled to strain: the columns up to the verdict
+    c.back() = "no: diverged";
     return c;
   }
   const Oracle oracle(r.final_body);
@@ -106,7 +154,8 @@ std::vector<std::string> cells(const Body& b, const std::string& type, const std
   for (const char* l : kLandmarks) {
     row.gaps.push_back(gap_at(oracle, r.mesh, m[l].height_m));
     const Gap& g = row.gaps.back();
-    c.push_back(num(g.mean_mm, 1) + " / " + num(g.max_mm, 1) + " (" + std::to_string(g.points) + ")");
+    c.push_back(g.points == 0 ? "- (0)"
+                              : num(g.mean_mm, 1) + " / " + num(g.max_mm, 1) + " (" + std::to_string(g.points) + ")");
   }
   c.insert(c.end(), {num(r.accuracy.inside_pct, 2), num(r.accuracy.depth_max_mm, 1), num(r.accuracy.crossings_pct, 2),
                      num(r.seam_gap_max_mm, 1), num(100 * r.strain_max, 1), limits_cell(r)});
@@ -114,83 +163,152 @@ std::vector<std::string> cells(const Body& b, const std::string& type, const std
   return c;
 }
 
-// the page's opening lines: what the paper gives, size M within the limits, the gap at the hip from S to XL
-std::vector<std::string> summary(const std::vector<Row>& rows) {
-  std::map<std::string, std::vector<const Row*>> by;  // body and garment: its sizes in order
-  for (const Row& r : rows) by[r.body + ", " + r.type].push_back(&r);
-  int m_meets = 0, grows = 0;
-  std::string m_misses, gaps;
+// what the summary says of one mesher's rows
+struct Tally {
+  int pairs = 0, m_meets = 0, grows = 0, rows = 0, meet = 0, clean = 0, springs = 0;
+  double spacing_lo = 1e300, spacing_hi = 0;  // the grids' [cm]
+  std::string m_misses, flat;
+};
+Tally tally(const std::vector<Row>& rows, bool on_grid) {
+  std::map<std::string, std::vector<const Row*>> by;  // garment and body: its sizes in order
+  for (const Row& r : rows)
+    if (r.on_grid == on_grid) by[std::string(r.type->name) + " on " + r.body].push_back(&r);
+  Tally t;
   for (const auto& [what, sizes] : by) {
-    std::vector<double> hip;  // the mean gap at the hip of each size that did not diverge, S to XL
+    std::vector<double> gap;  // the mean gap at the judged landmark of each size that did not diverge, S to XL
     for (const Row* r : sizes) {
-      if (r->size == "M" && r->meets) ++m_meets;
-      if (r->size == "M" && !r->meets) m_misses += (m_misses.empty() ? "" : "; ") + what;
-      if (!r->gaps.empty()) hip.push_back(r->gaps.back().mean_mm);
+      if (r->size == "M") ++(r->meets ? t.m_meets : t.pairs), t.m_misses += r->meets ? "" : "; " + what;
+      if (!r->gaps.empty()) gap.push_back(r->gaps[static_cast<std::size_t>(r->type->judged_at)].mean_mm);
+      ++t.rows, t.meet += r->meets ? 1 : 0, t.clean += r->slivers.total() == 0 ? 1 : 0;
+      t.springs += r->slivers.total();
+      t.spacing_lo = std::min(t.spacing_lo, r->spacing_cm), t.spacing_hi = std::max(t.spacing_hi, r->spacing_cm);
     }
-    bool up = hip.size() == draft_sizes().size();
+    bool up = gap.size() == draft_sizes().size();
     std::string series;
-    for (std::size_t k = 0; k < hip.size(); ++k) {
-      up = up && (k == 0 || hip[k] > hip[k - 1]);
-      series += std::string(k ? ", " : "") + num(hip[k], 1);
+    for (std::size_t k = 0; k < gap.size(); ++k) {
+      up = up && (k == 0 || gap[k] > gap[k - 1]);
+      series += std::string(k ? ", " : "") + num(gap[k], 1);
     }
-    grows += up ? 1 : 0;
-    gaps += std::string(gaps.empty() ? "" : "; ") + what + " " + series + " mm";
+    t.grows += up ? 1 : 0;
+    if (!up) t.flat += "; " + what + " " + series + " mm";
   }
-  const int n = static_cast<int>(by.size());
+  t.pairs += t.m_meets;
+  return t;
+}
+
+// "; a; b" as " (not: a; b)", "" as ""
+std::string except(const std::string& list) { return list.empty() ? "" : " (not: " + list.substr(2) + ")"; }
+
+// the page's opening lines: what the paper gives; per mesher, size M within the limits, the gap from S to XL where
+// each type is judged, the slivers; the verdict
+std::vector<std::string> summary(const std::vector<Row>& rows) {
+  const auto line = [&](const Tally& t, const std::string& how) {
+    return how + ": size M dresses its body within every limit in " + std::to_string(t.m_meets) + " of " +
+           std::to_string(t.pairs) + " garment and body pairs" + except(t.m_misses) +
+           "; the mean gap grows from S to XL (at the hip; the shirt's at the bust) in " + std::to_string(t.grows) +
+           " of " + std::to_string(t.pairs) + except(t.flat) + "; " + std::to_string(t.meet) + " of " +
+           std::to_string(t.rows) + " rows within every limit; " + std::to_string(t.clean) + " of " +
+           std::to_string(t.rows) + " garments without a structural spring under half a spacing (" +
+           std::to_string(t.springs) + " such springs in all).";
+  };
+  const Tally ring = tally(rows, false), grid = tally(rows, true);
   return {
       "The paper (Durupinar section 2): each panel's corners from the body's measurements, joined and filled on the "
       "cloth grid; it gives no measure of the fit nor a time for it.",
-      "Ours, one run each: size M dresses its body within every limit in " + std::to_string(m_meets) + " of " +
-          std::to_string(n) + " body and garment pairs" + (m_misses.empty() ? "" : " (not: " + m_misses + ")") +
-          "; the mean gap at the hip from S to XL: " + gaps + ".",
+      line(ring, "Ours, one run each, " + std::to_string(std::size(kTypes)) + " garment types on " +
+                     std::to_string(std::size(kBodies)) + " bodies, meshed with the ring snapped onto the outline"),
+      line(grid, "Drawn on the grid (Durupinar's construction)") +
+          " Every corner moves to a grid node up to a column outward and half a row off; the columns are " +
+          num(grid.spacing_lo, 1) + " to " + num(grid.spacing_hi, 1) + " cm wide here, each side of a panel gains " +
+          num((size_ease_cm(draft_sizes()[1]) - size_ease_cm(draft_sizes()[0])) / 4, 1) +
+          " cm from one size to the next.",
       "Verdict: every drafted garment type dresses every body at size M within every limit: " +
-          std::string(m_meets == n ? "yes" : "no") + "; the gap at the hip grows from S to XL on " +
-          std::to_string(grows) + " of " + std::to_string(n) + " (the drafted types: the skirt so far).",
+          std::string(ring.m_meets == ring.pairs ? "yes" : "no") + " (ring), " +
+          (grid.m_meets == grid.pairs ? "yes" : "no") + " (on the grid); the gap grows from S to XL: " +
+          (ring.grows == ring.pairs ? "yes" : "no") + " (ring), " + (grid.grows == grid.pairs ? "yes" : "no") +
+          " (on the grid); the generated panels have no spring under half a spacing: " +
+          (ring.clean == ring.rows ? "yes" : "no") + " (ring), " + (grid.clean == grid.rows ? "yes" : "no") +
+          " (on the grid).",
   };
 }
 
 const char* const kDescription =
-    "Each garment type `clothbench measure --draft` knows is drafted from each body's own measurements (Durupinar "
-    "section 2; `[[garment]] fit`, scenes/README.md, says how the panels are cut) in sizes S, M, L and XL, then sewn "
-    "and draped on that body standing still, with scenes/dressing/skirt.toml's other settings (is-cpu, face "
-    "queries, the stable regime) at 600 vertices. The bodies: those this project ships or finds, in their rest pose. "
-    "The fit: how far the cloth sits outside the body round the waist and the hip, as a tape round the garment "
-    "would show it: the points where its structural springs cross each landmark's height (as `clothbench measure` "
-    "finds it), their mean and largest signed distance to the body (the exact oracle's, points inside counting 0). A "
-    "skirt's top edge sits at the waist or just below it, so few springs cross the waist's height: the count of points "
-    "stands beside each gap. One "
-    "run each; wall time one thread, set-up included.\n\n";
+    "Each garment type `clothbench measure --draft` knows (skirt, sleeveless shirt, sleeveless dress) is drafted "
+    "from each body's own measurements (Durupinar section 2; `[[garment]] fit`, scenes/README.md, says how the "
+    "panels are cut) in sizes S, M, L and XL, meshed in two ways (`garment.on_grid`): the ring of grid nodes snapped "
+    "onto the outline (the default), and Durupinar's construction (the outline's points moved to grid nodes, joined "
+    "by Bresenham lines and filled, every vertex a grid node); then sewn and draped on that body standing still, with "
+    "the settings of its scene in scenes/dressing (is-cpu, the stable regime) and face "
+    "queries (quad midpoints too, as skirt.toml has them), at 600 vertices (the dress 800). The bodies, in their rest "
+    "pose: Debian's human; the "
+    "walking body; a taller MakeHuman body (scenes/data/body/mh_female_tall.obj, made by tools/make_body.py from the "
+    "same sources with a larger height target); GarmentCode's mean female, broader; and the walking body scaled to "
+    "0.9 across (`body.scale`). The fit: how far the cloth sits outside the body round the bust, the waist and the "
+    "hip, as a tape round the garment would show it: the points where its structural springs cross each landmark's "
+    "height (as `clothbench measure` finds it), their mean and largest signed distance to the body (the exact "
+    "oracle's, points inside counting 0), with the count of points beside each (a skirt's top edge sits at the "
+    "waist or just below it, so few springs cross there; a skirt has none at the bust, a shirt none at the hip). "
+    "The slivers: the meshed garment's structural springs shorter than half the grid spacing. One run each; wall "
+    "time one thread, set-up included.\n\n";
+
+// a picture's or a chart's file name
+std::string figure(const Type& type, bool on_grid) {
+  return "made-to-measure-" + std::string(type.name) + (on_grid ? "-grid" : "");
+}
 
 void made_to_measure(ExperimentContext& ctx) {
   MarkdownTable t = table();
   std::vector<Row> rows;
-  nlohmann::json series = nlohmann::json::array();
-  std::vector<Image> pictures;
+  std::map<std::string, nlohmann::json> series;        // per type: one curve per body and mesher
+  std::map<std::string, std::vector<Image>> pictures;  // per figure: each body in size M
+  const int vertices_quick = 150;
   for (const Body& b : kBodies) {
     std::optional<BodyMeasurements> m;  // the body's, once (its rest pose is every row's final body)
-    for (const std::string& type : draft_types()) {
-      std::vector<double> x, y;
-      for (const std::string& size : draft_sizes()) {
-        const RunResult& r = ctx.run("dressing/skirt.toml", "is-cpu", overrides(ctx, b, type, size));
-        ctx.add_run(r, "made-to-measure/" + std::string(b.file) + "/" + type + "/" + size);
-        if (!m) m = measure_body(r.final_body);
-        rows.push_back({b.label, type, size});
-        t.row(cells(b, type, size, r, *m, rows.back()));
-        if (!rows.back().gaps.empty()) x.push_back(size_ease_cm(size)), y.push_back(rows.back().gaps.back().mean_mm);
-        if (size == "M" && !r.divergence)
-          pictures.push_back(ctx.pictures().render(r.final_body, r.mesh, 360, View::kFront));
+    for (const Type& type : kTypes)
+      for (const bool on_grid : {false, true}) {
+        std::vector<double> x, y;
+        for (const std::string& size : draft_sizes()) {
+          const RunResult& r =
+              ctx.run("dressing/" + std::string(type.name) + ".toml", "is-cpu", overrides(ctx, b, type, on_grid, size));
+          ctx.add_run(r,
+                      "made-to-measure/" + std::string(b.label) + "/" + type.name + "/" + mesher(on_grid) + "/" + size);
+          if (!m) m = measure_body(r.final_body);
+          rows.push_back({b.label, &type, on_grid, size});
+          Row& row = rows.back();
+          const MeshedPattern mesh = drafted(r, *m, type, size, ctx.quick() ? vertices_quick : type.vertices, on_grid);
+          row.slivers = slivers(mesh);
+          row.spacing_cm = mesh.spacing_cm;
+          t.row(cells(b, r, *m, row));
+          if (!row.gaps.empty())
+            x.push_back(size_ease_cm(size)), y.push_back(row.gaps[static_cast<std::size_t>(type.judged_at)].mean_mm);
+          if (size == "M" && !r.divergence)
+            pictures[figure(type, on_grid)].push_back(ctx.pictures().render(r.final_body, r.mesh, 360, View::kFront));
+        }
+        series[type.name].push_back({{"label", std::string(b.label) + (on_grid ? ", on the grid" : "")},
+                                     {"x", x},
+                                     {"y", y},
+                                     {"style", on_grid ? "x--" : "o-"}});
       }
-      series.push_back({{"label", std::string(b.label) + ", " + type}, {"x", x}, {"y", y}, {"style", "o-"}});
+  }
+  std::string figures;
+  for (const Type& type : kTypes) {
+    const std::string at =
+        std::string(kLandmarks[type.judged_at]).substr(0, std::string(kLandmarks[type.judged_at]).find(' '));
+    ctx.chart(figure(type, false),
+              {{"title", "Drafted " + std::string(type.name) + "s: the gap at the " + at + " against the size's ease"},
+               {"xlabel", "ease [cm] (S, M, L, XL)"},
+               {"ylabel", "mean gap at the " + at + " [mm]"},
+               {"series", series[type.name]}});
+    figures += "![" + std::string(type.name) + " chart](" + figure(type, false) + ".png)\n\n";
+    for (const bool on_grid : {false, true}) {
+      side_by_side(pictures[figure(type, on_grid)]).write_png(ctx.path("pictures/" + figure(type, on_grid) + ".png"));
+      figures += "![each body in its size M " + std::string(type.name) + ", " + mesher(on_grid) + "](pictures/" +
+                 figure(type, on_grid) + ".png)\n\n";
     }
   }
-  ctx.chart("made-to-measure", {{"title", "Drafted garments: the gap at the hip against the size's ease"},
-                                {"xlabel", "ease at the hip [cm] (S, M, L, XL)"},
-                                {"ylabel", "mean gap at the hip [mm]"},
-                                {"series", series}});
-  side_by_side(pictures).write_png(ctx.path("pictures/made-to-measure.png"));
   ctx.write("made-to-measure", "Made-to-measure garments on each body",
-            kDescription + t.str() + "\n![chart](made-to-measure.png)\n\n![each body in its size M " +
-                "garment](pictures/made-to-measure.png)\n\nPictures drawn by " + ctx.pictures().name() + ".\n",
+            kDescription + t.str() + "\n" + figures + "Pictures drawn by " + ctx.pictures().name() +
+                ", the bodies in the order of the table: each type with the ring mesher, then on the grid.\n",
             summary(rows));
 }
 

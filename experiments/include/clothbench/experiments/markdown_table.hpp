@@ -12,6 +12,7 @@ class MarkdownTable {
   explicit MarkdownTable(std::vector<std::string> header) : header_(std::move(header)) {}
   void row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
   std::string str() const;
+  std::size_t columns() const { return header_.size(); }
 
  private:
   std::vector<std::string> header_;
