@@ -68,8 +68,12 @@ void durupinar_f6(ExperimentContext& ctx) {
     const char* product;
     const char* scene;
     int vertices;
+    std::size_t paper;  // its row of the paper's figure
+    const char* fit;    // "": the scene's pattern; else drafted from the body and drawn on the grid, as hers were
   };
-  const G garments[] = {{"skirt", "durupinar/skirt.toml", 1400}, {"trousers", "durupinar/trousers.toml", 2774}};
+  const G garments[] = {{"skirt", "durupinar/skirt.toml", 1400, 0, ""},
+                        {"trousers", "durupinar/trousers.toml", 2774, 1, ""},
+                        {"skirt drafted (M, on the grid)", "durupinar/skirt.toml", 1400, 0, "skirt"}};
   MarkdownTable t({"garment", "collider", "cloth against itself", "vertices", "seam pairs", "sew iterations",
                    "sewing time [s]", "ms/iteration first 10 %", "ms/iteration last 10 %", "sewn", "seam gap [mm]",
                    "cloth through itself [%]", "paper vertices", "paper seams", "paper sewing time [s]"});
@@ -78,22 +82,23 @@ void durupinar_f6(ExperimentContext& ctx) {
   RunOptions trace;
   trace.trace = true;
   // and image space with the cloth against itself answered (solver.self_contact_mm), as hers was
-  for (std::size_t i = 0; i < 2; ++i)
+  for (const G& g : garments)
     for (const auto& [collider, self_mm] : variants(ctx)) {
-      const auto& g = garments[i];
       std::vector<std::string> sets{"garment.vertices=" + std::to_string(g.vertices), "stop.drape_max_s=0"};
+      if (*g.fit)
+        sets.insert(sets.end(), {"garment.file=", "garment.fit=" + std::string(g.fit), "garment.on_grid=true"});
       if (!self_mm.empty()) sets.push_back("solver.self_contact_mm=" + self_mm);
       if (ctx.quick()) sets.push_back("stop.max_iterations=60");
       const RunResult& r = ctx.run(g.scene, collider, sets, trace);
       const auto [first, last] = first_and_last_tenth(r.sew_iteration_ms);
-      const auto& p = paper::kDurupinarF6[i];
+      const auto& p = paper::kDurupinarF6[g.paper];
       const std::string self = self_mm.empty() ? "no" : self_mm + " mm";
       t.row({g.product, r.collider, self, std::to_string(r.vertices), std::to_string(r.mesh.seam_pairs.cols()),
              std::to_string(r.sew.iterations), num(r.sew.wall_ms / 1e3, 3), num(first, 3), num(last, 3),
              r.sew.reached ? "yes" : "no", num(r.seam_gap_max_mm, 1), num(r.accuracy.cloth_crossings_pct, 2),
              std::to_string(p.vertices), std::to_string(p.seams), num(p.total_sewing_s, 3)});
-      ctx.add_run(r, std::string("durupinar-f6/") + g.product + "/" + r.collider +
-                         (self_mm.empty() ? "" : "/self-contact-" + self_mm + "mm"));
+      ctx.add_run(r, std::string("durupinar-f6/") + (*g.fit ? std::string(g.fit) + "-drafted" : g.product) + "/" +
+                         r.collider + (self_mm.empty() ? "" : "/self-contact-" + self_mm + "mm"));
       ours.push_back(std::string(g.product) + " " + collider + (self_mm.empty() ? "" : " against itself") + " " +
                      (r.sew.reached ? "sewn in " + num(r.sew.wall_ms / 1e3, 2) + " s"
                                     : "not sewn in " + num(r.sew.wall_ms / 1e3, 2) + " s") +
@@ -111,6 +116,8 @@ void durupinar_f6(ExperimentContext& ctx) {
   for (const auto& f : paper::kDurupinarFps) fps.row({f.sequence, num(f.fps, 3)});
   ctx.write("durupinar-f6", "Durupinar Fig. 6: sewing times",
             "Skirt and trousers sewn with the attraction heuristic (Durupinar Eq. 1) and merging, no gravity, "
+            "and a skirt drafted from the body's measurements (size M, `garment.fit`) and drawn on the grid "
+            "(`garment.on_grid`) as Durupinar builds hers (section 2; no drafted trousers yet), "
             "with the image-space collider (is-cpu) and an exact object-space one (embree; Durupinar's own was an "
             "AABB tree over the cloth, with self-collisions), until every seam pair is merged "
             "or closer than stop.sewn_gap_mm; image space also with the cloth against itself answered (" +
