@@ -199,8 +199,11 @@ Pattern draft_garment(const std::string& type, const BodyFrame& body, const Body
   if (!(ease_cm >= 0 && ease_cm <= 100))
     throw std::invalid_argument("ease: " + std::to_string(ease_cm) + " cm is outside [0, 100]");
   const std::vector<std::string> types = draft_types();
-  if (std::find(types.begin(), types.end(), type) == types.end())
-    throw std::invalid_argument("draft: unknown garment type '" + type + "' (skirt, shirt, dress)");
+  if (std::find(types.begin(), types.end(), type) == types.end()) {
+    std::string known;
+    for (const std::string& t : types) known += (known.empty() ? "" : ", ") + t;
+    throw std::invalid_argument("draft: unknown garment type '" + type + "' (" + known + ")");
+  }
   Pattern p = type == "skirt" ? draft_skirt(body, m, ease_cm) : draft_bodice(type, body, m, ease_cm);
   validate_pattern(p);
   return p;
