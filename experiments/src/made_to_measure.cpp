@@ -41,7 +41,7 @@ struct Type {
   int vertices;
   int judged_at;  // index into kLandmarks
 };
-const Type kTypes[] = {{"skirt", 600, 2}, {"shirt", 600, 0}, {"dress", 800, 2}};
+const Type kTypes[] = {{"skirt", 600, 2}, {"shirt", 600, 0}, {"dress", 800, 2}, {"trousers", 800, 2}};
 
 // how far the cloth sits off the body round one landmark, as a tape round the garment there would show it: the
 // points where the cloth's structural springs cross the landmark's height, their mean and largest distance outside
@@ -233,13 +233,15 @@ std::vector<std::string> summary(const std::vector<Row>& rows) {
 }
 
 const char* const kDescription =
-    "Each garment type `clothbench measure --draft` knows (skirt, sleeveless shirt, sleeveless dress) is drafted "
+    "Each garment type `clothbench measure --draft` knows (skirt, sleeveless shirt, sleeveless dress, knee-length "
+    "trousers) is drafted "
     "from each body's own measurements (Durupinar section 2; `[[garment]] fit`, scenes/README.md, says how the "
     "panels are cut) in sizes S, M, L and XL, meshed in two ways (`garment.on_grid`): the ring of grid nodes snapped "
     "onto the outline (the default), and Durupinar's construction (the outline's points moved to grid nodes, joined "
     "by Bresenham lines and filled, every vertex a grid node); then sewn and draped on that body standing still, with "
     "the settings of its scene in scenes/dressing (is-cpu, the stable regime) and face "
-    "queries (quad midpoints too, as skirt.toml has them), at 600 vertices (the dress 800). The bodies, in their rest "
+    "queries (quad midpoints too, as skirt.toml has them), at 600 vertices (the dress and the trousers 800). The "
+    "bodies, in their rest "
     "pose: Debian's human; the "
     "walking body; a taller MakeHuman body (scenes/data/body/mh_female_tall.obj, made by tools/make_body.py from the "
     "same sources with a larger height target); GarmentCode's mean female, broader; and the walking body scaled to "

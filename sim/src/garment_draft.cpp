@@ -2,6 +2,7 @@
 #include "clothbench/sim/garment_draft.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -20,6 +21,15 @@ constexpr double kClearanceCm = 3;
 // a size's ease it hangs centimetres off the body, and attached there it held the side seam's springs stretched past
 // the strain limit
 constexpr double kWaistEaseCm = 2;
+// the trousers' waistband's ease [cm]: four panels wrapped round the legs, not round the hip as the skirt's two, come
+// to the waist from farther off (with 2 cm, the walking body's left the side seams 3.4 mm open at the waist)
+constexpr double kTrousersWaistEaseCm = 4;
+// how far below the body's crotch the trousers' crotch seam is cut [m]: the front and back crotch seams pass under
+// the body between the legs (cut at the body's crotch, the strain limit held them too short to close round it: seams
+// 5-14 mm open where the four panels meet; cut 4 cm below, 3-5 mm)
+constexpr double kCrotchDrop = 0.08;
+// how far below the knee's section the trousers end [m]
+constexpr double kHemBelowKnee = 0.04;
 // how far below the armpit a bodice's side seam ends [m]
 constexpr double kBelowArmpit = 0.03;
 // how far above the shoulder's top a bodice's shoulder seam is cut, as a fraction of the chest's depth at the
@@ -182,6 +192,125 @@ Pattern draft_bodice(const std::string& type, const BodyFrame& body, const BodyM
   return sewn_front_and_back(type, std::move(front), std::move(back));
 }
 
+// the panel mirrored across x = 0, its outline reversed so that it still turns counter-clockwise, its edges kept
+Panel mirrored(const Panel& p, const std::string& name) {
+  const int n = static_cast<int>(p.outline.size()), m = p.edge_count();
+  Panel q;
+  q.name = name;
+  for (int i = 0; i < n; ++i) {
+    const Vec2d& a = p.outline[static_cast<std::size_t>(i == 0 ? 0 : n - i)];
+    q.outline.push_back({-a.x(), a.y()});
+  }
+  // edge j ran from point b_j to b_(j+1); reversed, the edges come last to first, edge j from point b_(j+1)
+  for (int j = m - 1; j >= 0; --j) {
+    const int next = j + 1 < m ? p.edge_begin[static_cast<std::size_t>(j + 1)] : n;
+    q.edge_begin.push_back(next == n ? 0 : n - next);
+    q.edge_names.push_back(p.edge_names[static_cast<std::size_t>(j)]);
+  }
+  return q;
+}
+
+// the two legs' sections at height h (the two largest loops nearest the middle: the hands may hang as low), left
+// (x > 0) first
+std::array<SectionLoop, 2> legs_at(const BodyFrame& body, double h) {
+  auto loops = cross_section(body, h);
+  const double big = loops.empty() ? 0 : loops.front().area();
+  loops.erase(std::remove_if(loops.begin(), loops.end(), [&](const SectionLoop& l) { return l.area() < 0.2 * big; }),
+              loops.end());
+  std::sort(loops.begin(), loops.end(), [](const SectionLoop& a, const SectionLoop& b) {
+    return std::abs(a.centroid().x()) < std::abs(b.centroid().x());
+  });
+  if (loops.size() < 2 || loops[0].centroid().x() * loops[1].centroid().x() >= 0)
+    throw std::invalid_argument("draft: no two legs apart " + std::to_string(static_cast<int>(100 * h)) +
+                                " cm above the soles");
+  if (loops[0].centroid().x() < 0) std::swap(loops[0], loops[1]);
+  return {loops[0], loops[1]};
+}
+
+// knee-length trousers: four panels, the front and back of each leg, sewn along the outside and inside of each leg
+// and at the centre front and back (as garments/trousers.pattern). A panel spans half a leg below the crotch (the
+// thigh girth plus the ease, halved) and a quarter of the hip above it (the hip girth plus the ease), the waist's
+// quarter (plus kTrousersWaistEaseCm round) at the top, the crotch curving in from the centre seam at the hip to the
+// inside leg at the crotch. The left front panel, counter-clockwise from the hem's inner corner [cm]; x = 0 is the
+// leg's axis
+Panel trousers_panel(const BodyMeasurements& m, double ease_cm, double hem_h) {
+  const double leg_half = (100 * m["thigh girth"].value_m + ease_cm) / 4;  // a quarter of the leg round
+  const double hip_quarter = (100 * m["hip girth"].value_m + ease_cm) / 4;
+  const double waist_quarter = (100 * m["waist girth"].value_m + kTrousersWaistEaseCm) / 4;
+  const double crotch_y = 100 * (m["crotch height"].height_m - kCrotchDrop - hem_h);
+  const double hip_y = 100 * (m["hip girth"].height_m - hem_h);
+  const double waist_y = 100 * (m["waist girth"].height_m - hem_h);
+  const double centre_x = leg_half - hip_quarter;  // the centre front seam, inside the leg's axis
+  Panel p;
+  p.name = "front_l";
+  p.outline.push_back({-leg_half, 0});
+  edge(p, "hem", {{leg_half, 0}});
+  edge(p, "outseam", {{leg_half, crotch_y}, {leg_half, hip_y}, {centre_x + waist_quarter, waist_y}});
+  edge(p, "waist", {{centre_x, waist_y}});
+  edge(p, "fly", {{centre_x, hip_y}});
+  edge(p, "crotch", quad({centre_x, hip_y}, {centre_x, crotch_y}, {-leg_half, crotch_y}));
+  edge(p, "inseam", {});  // back down to the hem's inner corner
+  return p;
+}
+
+Pattern draft_trousers(const BodyFrame& body, const BodyMeasurements& m, double ease_cm) {
+  const double knee_h = m["knee girth"].height_m, thigh_h = m["thigh girth"].height_m;
+  const double hem_h = knee_h - kHemBelowKnee;
+  const Panel front_l = trousers_panel(m, ease_cm, hem_h);
+  Pattern p;
+  p.name = "trousers";
+  p.panels = {front_l, mirrored(front_l, "front_r"), mirrored(front_l, "back_l"), front_l};
+  p.panels[3].name = "back_r";
+  // each panel wrapped round its leg's axis (through the leg's section under the crotch), tilted as the leg is
+  // between there and the knee, on a cylinder that holds a quarter of the leg round across half its width and
+  // clears the thigh by kClearanceCm
+  const auto thighs = legs_at(body, thigh_h), knees = legs_at(body, knee_h);
+  const double leg_half = (100 * m["thigh girth"].value_m + ease_cm) / 4;
+  const Box3 box = bounding_box(body.positions);
+  const Vec3 size = box.size();
+  for (int side = 0; side < 2; ++side) {  // 0: left (+x), 1: right
+    const Eigen::Vector2d axis = thighs[static_cast<std::size_t>(side)].centroid();
+    // the leg's half of the body from the thigh up to the waist, which the panel covers (the legs' and the pelvis's
+    // sections: the hands' are smaller): the hip reaches beyond the thigh (clearing the thigh alone, a sixth of the
+    // trousers started inside the hips)
+    double reach = 0;
+    for (double h = thigh_h; h <= m["waist girth"].height_m; h += 0.02) {
+      const auto loops = cross_section(body, h);
+      for (const auto& loop : loops)
+        for (const auto& q : loop.points)
+          if (loop.area() > 0.2 * loops.front().area() && (side == 0) == (q.x() > 0))
+            reach = std::max(reach, (q - axis).norm());
+    }
+    const double radius = std::max(2 * leg_half / M_PI, 100 * reach + kClearanceCm);
+    const double tilt =
+        180 / M_PI * std::atan((knees[static_cast<std::size_t>(side)].centroid().x() - axis.x()) / (thigh_h - knee_h));
+    Placement front;
+    front.anchor = Vec3(Real((axis.x() - box.min.x()) / size.x()), Real((hem_h - box.min.y()) / size.y()),
+                        Real((axis.y() - box.min.z()) / size.z()));
+    front.offset_cm = Vec3(0, 0, Real(radius));
+    front.wrap_radius_cm = Real(radius);
+    front.roll_deg = Real(tilt);
+    Placement back = front;
+    back.offset_cm.z() = -Real(radius);
+    back.yaw_deg = 180;
+    back.roll_deg = -Real(tilt);  // roll turns the panel before yaw
+    p.panels[side == 0 ? 0 : 1].placement = front;
+    p.panels[side == 0 ? 2 : 3].placement = back;
+  }
+  const auto seam = [&](int a, const std::string& ea, int b, const std::string& eb) {
+    const auto index = [&](int panel, const std::string& e) {
+      const auto& names = p.panels[static_cast<std::size_t>(panel)].edge_names;
+      return static_cast<int>(std::find(names.begin(), names.end(), e) - names.begin());
+    };
+    p.seams.push_back({a, index(a, ea), b, index(b, eb), true});
+  };
+  seam(0, "outseam", 2, "outseam"), seam(0, "inseam", 2, "inseam");  // the left leg
+  seam(1, "outseam", 3, "outseam"), seam(1, "inseam", 3, "inseam");  // the right leg
+  seam(0, "crotch", 1, "crotch"), seam(0, "fly", 1, "fly");          // the centre front
+  seam(2, "crotch", 3, "crotch"), seam(2, "fly", 3, "fly");          // the centre back
+  return p;
+}
+
 }  // namespace
 
 std::vector<std::string> draft_sizes() { return {"S", "M", "L", "XL"}; }
@@ -193,7 +322,7 @@ double size_ease_cm(const std::string& size) {
   throw std::invalid_argument("size: unknown size '" + size + "' (S, M, L, XL)");
 }
 
-std::vector<std::string> draft_types() { return {"skirt", "shirt", "dress"}; }
+std::vector<std::string> draft_types() { return {"skirt", "shirt", "dress", "trousers"}; }
 
 Pattern draft_garment(const std::string& type, const BodyFrame& body, const BodyMeasurements& m, double ease_cm) {
   if (!(ease_cm >= 0 && ease_cm <= 100))
@@ -204,7 +333,9 @@ Pattern draft_garment(const std::string& type, const BodyFrame& body, const Body
     for (const std::string& t : types) known += (known.empty() ? "" : ", ") + t;
     throw std::invalid_argument("draft: unknown garment type '" + type + "' (" + known + ")");
   }
-  Pattern p = type == "skirt" ? draft_skirt(body, m, ease_cm) : draft_bodice(type, body, m, ease_cm);
+  Pattern p = type == "skirt"      ? draft_skirt(body, m, ease_cm)
+              : type == "trousers" ? draft_trousers(body, m, ease_cm)
+                                   : draft_bodice(type, body, m, ease_cm);
   validate_pattern(p);
   return p;
 }

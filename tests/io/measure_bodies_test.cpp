@@ -137,7 +137,48 @@ TEST(Draft, AShirtAndADressHaveTheChestAndHipGirthsPlusTheEase) {
   for (const char* type : {"shirt", "dress"})
     for (const double ease : {4.0, 16.0}) expect_a_bodice(type, rest, m, ease);
   const std::vector<std::string> types = draft_types();
-  EXPECT_EQ(types, (std::vector<std::string>{"skirt", "shirt", "dress"}));
+  EXPECT_EQ(types, (std::vector<std::string>{"skirt", "shirt", "dress", "trousers"}));
+}
+
+// trousers drafted from Debian's human: four panels, each leg's front and back sewn at its sides, the two fronts and
+// the two backs at the centre; each panel half a leg wide below the crotch (the thigh girth plus the ease, halved)
+// and a quarter of the hip plus the ease across above it; every seam's two edges as long; the right panels mirror
+// the left ones
+TEST(Draft, TrousersHaveTheThighAndHipGirthsPlusTheEase) {
+  if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const BodyFrame rest = load_body("debian:human").rest();
+  const BodyMeasurements m = measure_body(rest);
+  const double ease = 8;
+  const Pattern p = draft_garment("trousers", rest, m, ease);
+  ASSERT_EQ(p.panels.size(), 4u);
+  ASSERT_EQ(p.seams.size(), 8u);
+  for (const Seam& s : p.seams)
+    EXPECT_NEAR(edge_length_cm(p.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a),
+                edge_length_cm(p.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b), 1e-6)
+        << edge_label(p, s.panel_a, s.edge_a);
+  const auto extent = [](const Panel& panel, double y) {  // the outline's points at height y: leftmost, rightmost
+    double lo = 1e9, hi = -1e9;
+    for (const Vec2d& q : panel.outline)
+      if (std::abs(q.y() - y) < 1e-9) lo = std::min(lo, q.x()), hi = std::max(hi, q.x());
+    return hi - lo;
+  };
+  const Panel& front_l = p.panels[0];
+  EXPECT_NEAR(extent(front_l, 0), (100 * m["thigh girth"].value_m + ease) / 2, 1e-6);  // the hem
+  double top = 0;
+  for (const Vec2d& q : front_l.outline) top = std::max(top, q.y());
+  const double hip_y = top - 100 * (m["waist girth"].height_m - m["hip girth"].height_m);
+  EXPECT_NEAR(extent(front_l, hip_y), (100 * m["hip girth"].value_m + ease) / 4, 1e-6);
+  for (std::size_t k = 0; k < front_l.outline.size(); ++k) {  // front_r is front_l mirrored
+    const Vec2d& q = front_l.outline[k];
+    EXPECT_TRUE(std::any_of(p.panels[1].outline.begin(), p.panels[1].outline.end(),
+                            [&](const Vec2d& r) { return (r - Vec2d(-q.x(), q.y())).norm() < 1e-9; }))
+        << "point " << k;
+  }
+  double area = 0;  // shoelace: front_r still turns counter-clockwise
+  const auto& o = p.panels[1].outline;
+  for (std::size_t k = 0; k < o.size(); ++k)
+    area += o[k].x() * o[(k + 1) % o.size()].y() - o[(k + 1) % o.size()].x() * o[k].y();
+  EXPECT_GT(area, 0);
 }
 
 // the CLI: a standing body prints its measurements and drafts a garment into a pattern file; a closed mesh that is no
