@@ -73,7 +73,8 @@ void durupinar_f6(ExperimentContext& ctx) {
   };
   const G garments[] = {{"skirt", "durupinar/skirt.toml", 1400, 0, ""},
                         {"trousers", "durupinar/trousers.toml", 2774, 1, ""},
-                        {"skirt drafted (M, on the grid)", "durupinar/skirt.toml", 1400, 0, "skirt"}};
+                        {"skirt drafted (M, on the grid)", "durupinar/skirt.toml", 1400, 0, "skirt"},
+                        {"trousers drafted (M, on the grid)", "durupinar/trousers.toml", 2774, 1, "trousers"}};
   MarkdownTable t({"garment", "collider", "cloth against itself", "vertices", "seam pairs", "sew iterations",
                    "sewing time [s]", "ms/iteration first 10 %", "ms/iteration last 10 %", "sewn", "seam gap [mm]",
                    "cloth through itself [%]", "paper vertices", "paper seams", "paper sewing time [s]"});
@@ -116,8 +117,8 @@ void durupinar_f6(ExperimentContext& ctx) {
   for (const auto& f : paper::kDurupinarFps) fps.row({f.sequence, num(f.fps, 3)});
   ctx.write("durupinar-f6", "Durupinar Fig. 6: sewing times",
             "Skirt and trousers sewn with the attraction heuristic (Durupinar Eq. 1) and merging, no gravity, "
-            "and a skirt drafted from the body's measurements (size M, `garment.fit`) and drawn on the grid "
-            "(`garment.on_grid`) as Durupinar builds hers (section 2; no drafted trousers yet), "
+            "and a skirt and knee-length trousers drafted from the body's measurements (size M, `garment.fit`) and "
+            "drawn on the grid (`garment.on_grid`) as Durupinar builds hers (section 2), "
             "with the image-space collider (is-cpu) and an exact object-space one (embree; Durupinar's own was an "
             "AABB tree over the cloth, with self-collisions), until every seam pair is merged "
             "or closer than stop.sewn_gap_mm; image space also with the cloth against itself answered (" +
