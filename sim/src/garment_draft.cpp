@@ -126,18 +126,24 @@ std::vector<std::pair<std::string, std::vector<Vec2d>>> bodice_top(double chest_
           {"armhole_l", armhole_l}};
 }
 
+// sews edge `ea` of panel a to edge `eb` of panel b, one against the other (the drafts' panels mirror each other),
+// where panel a has that edge
+void sew(Pattern& p, int a, const std::string& ea, int b, const std::string& eb) {
+  const auto edge = [&](int panel, const std::string& e) {
+    const auto& names = p.panels[static_cast<std::size_t>(panel)].edge_names;
+    return static_cast<int>(std::find(names.begin(), names.end(), e) - names.begin());
+  };
+  if (edge(a, ea) < p.panels[static_cast<std::size_t>(a)].edge_count())
+    p.seams.push_back({a, edge(a, ea), b, edge(b, eb), true});
+}
+
 Pattern sewn_front_and_back(const std::string& name, Panel front, Panel back) {
   Pattern p;
   p.name = name;
   p.panels = {std::move(front), std::move(back)};
   // the back is turned (yaw 180): its left edges lie beside the front's right ones
-  const auto edge_of = [&](const std::string& e) {
-    const auto& names = p.panels[0].edge_names;
-    return static_cast<int>(std::find(names.begin(), names.end(), e) - names.begin());
-  };
-  for (const auto& [a, b] : std::vector<std::pair<std::string, std::string>>{
-           {"side_r", "side_l"}, {"side_l", "side_r"}, {"shoulder_r", "shoulder_l"}, {"shoulder_l", "shoulder_r"}})
-    if (edge_of(a) < p.panels[0].edge_count()) p.seams.push_back({0, edge_of(a), 1, edge_of(b), true});
+  sew(p, 0, "side_r", 1, "side_l"), sew(p, 0, "side_l", 1, "side_r");
+  sew(p, 0, "shoulder_r", 1, "shoulder_l"), sew(p, 0, "shoulder_l", 1, "shoulder_r");
   return p;
 }
 
@@ -297,17 +303,10 @@ Pattern draft_trousers(const BodyFrame& body, const BodyMeasurements& m, double 
     p.panels[side == 0 ? 0 : 1].placement = front;
     p.panels[side == 0 ? 2 : 3].placement = back;
   }
-  const auto seam = [&](int a, const std::string& ea, int b, const std::string& eb) {
-    const auto index = [&](int panel, const std::string& e) {
-      const auto& names = p.panels[static_cast<std::size_t>(panel)].edge_names;
-      return static_cast<int>(std::find(names.begin(), names.end(), e) - names.begin());
-    };
-    p.seams.push_back({a, index(a, ea), b, index(b, eb), true});
-  };
-  seam(0, "outseam", 2, "outseam"), seam(0, "inseam", 2, "inseam");  // the left leg
-  seam(1, "outseam", 3, "outseam"), seam(1, "inseam", 3, "inseam");  // the right leg
-  seam(0, "crotch", 1, "crotch"), seam(0, "fly", 1, "fly");          // the centre front
-  seam(2, "crotch", 3, "crotch"), seam(2, "fly", 3, "fly");          // the centre back
+  sew(p, 0, "outseam", 2, "outseam"), sew(p, 0, "inseam", 2, "inseam");  // the left leg
+  sew(p, 1, "outseam", 3, "outseam"), sew(p, 1, "inseam", 3, "inseam");  // the right leg
+  sew(p, 0, "crotch", 1, "crotch"), sew(p, 0, "fly", 1, "fly");          // the centre front
+  sew(p, 2, "crotch", 3, "crotch"), sew(p, 2, "fly", 3, "fly");          // the centre back
   return p;
 }
 
