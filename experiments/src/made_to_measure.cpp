@@ -34,6 +34,11 @@ const Body kBodies[] = {
 };
 // the landmarks the fit is measured at
 const char* const kLandmarks[] = {"bust girth", "waist girth", "hip girth"};
+// a landmark's first word: "hip" for "hip girth"
+std::string landmark_word(const char* landmark) {
+  const std::string l(landmark);
+  return l.substr(0, l.find(' '));
+}
 // a garment type: its vertex count (its dressing scene's; the shirt's raised to the skirt's), and the landmark
 // where its size's ease tells, at which the fit is judged (the shirt ends above the hip)
 struct Type {
@@ -87,13 +92,16 @@ struct Row {
   double spacing_cm = 0;  // the grid's
 };
 
+// the row's vertex count: the type's, or a few at quick sizes
+int vertices(const ExperimentContext& ctx, const Type& type) { return ctx.quick() ? 150 : type.vertices; }
+
 std::vector<std::string> overrides(const ExperimentContext& ctx, const Body& b, const Type& type, bool on_grid,
                                    const std::string& size) {
   std::vector<std::string> sets{"body.file=" + std::string(b.file),
                                 "garment.file=",
                                 "garment.fit=" + std::string(type.name),
                                 "garment.size=" + size,
-                                "garment.vertices=" + std::to_string(ctx.quick() ? 150 : type.vertices),
+                                "garment.vertices=" + std::to_string(vertices(ctx, type)),
                                 "garment.on_grid=" + std::string(on_grid ? "true" : "false"),
                                 "solver.face_queries=true"};
   if (*b.scale) sets.push_back("body.scale=" + std::string(b.scale));
@@ -114,8 +122,7 @@ MarkdownTable table() {
                                 "settled",
                                 "iterations (sew + drape)",
                                 "wall to dressed [s] (set-up incl.)"};
-  for (const char* l : kLandmarks)
-    head.push_back("gap at the " + std::string(l).substr(0, std::string(l).find(' ')) + ": mean / max [mm] (points)");
+  for (const char* l : kLandmarks) head.push_back("gap at the " + landmark_word(l) + ": mean / max [mm] (points)");
   for (const char* h :
        {"inside [%]", "depth max [mm]", "crossings [%]", "seam gap [mm]", "strain max [%]", "meets the limits"})
     head.push_back(h);
@@ -263,7 +270,6 @@ void made_to_measure(ExperimentContext& ctx) {
   std::vector<Row> rows;
   std::map<std::string, nlohmann::json> series;        // per type: one curve per body and mesher
   std::map<std::string, std::vector<Image>> pictures;  // per figure: each body in size M
-  const int vertices_quick = 150;
   for (const Body& b : kBodies) {
     std::optional<BodyMeasurements> m;  // the body's, once (its rest pose is every row's final body)
     for (const Type& type : kTypes)
@@ -277,7 +283,7 @@ void made_to_measure(ExperimentContext& ctx) {
           if (!m) m = measure_body(r.final_body);
           rows.push_back({b.label, &type, on_grid, size});
           Row& row = rows.back();
-          const MeshedPattern mesh = drafted(r, *m, type, size, ctx.quick() ? vertices_quick : type.vertices, on_grid);
+          const MeshedPattern mesh = drafted(r, *m, type, size, vertices(ctx, type), on_grid);
           row.slivers = slivers(mesh);
           row.spacing_cm = mesh.spacing_cm;
           t.row(cells(b, r, *m, row));
@@ -294,8 +300,7 @@ void made_to_measure(ExperimentContext& ctx) {
   }
   std::string figures;
   for (const Type& type : kTypes) {
-    const std::string at =
-        std::string(kLandmarks[type.judged_at]).substr(0, std::string(kLandmarks[type.judged_at]).find(' '));
+    const std::string at = landmark_word(kLandmarks[type.judged_at]);
     ctx.chart(figure(type, false),
               {{"title", "Drafted " + std::string(type.name) + "s: the gap at the " + at + " against the size's ease"},
                {"xlabel", "ease [cm] (S, M, L, XL)"},

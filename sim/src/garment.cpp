@@ -72,7 +72,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_gr
   MeshedPattern out;
   out.spacing_cm = h;
   std::vector<PanelGrid> grids;
-  std::vector<Panel> drawn(pat.panels);  // on the grid: each panel's outline as drawn there
+  std::vector<Panel> drawn(on_grid ? pat.panels.size() : 0);  // on the grid: each panel's outline as drawn there
   for (std::size_t pi = 0; pi < pat.panels.size(); ++pi)
     grids.push_back(on_grid ? grid_panel_on_grid(pat.panels[pi], h, drawn[pi]) : grid_panel(pat.panels[pi], h));
   if (!on_grid) align_seam_vertices(pat, h, grids);  // on the grid, the vertices stay on their nodes
@@ -80,7 +80,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_gr
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
     const Panel& p = pat.panels[pi];
     offset.push_back(out.mesh.vertex_count());
-    out.mesh.append(panel_mesh(drawn[pi], grids[pi], h));
+    out.mesh.append(panel_mesh(on_grid ? drawn[pi] : p, grids[pi], h));
     for (const auto& q : grids[pi].uv) {
       out.uv.conservativeResize(2, out.uv.cols() + 1);
       out.uv.col(out.uv.cols() - 1) = q;

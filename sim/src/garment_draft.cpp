@@ -89,23 +89,33 @@ double reach_from(const BodyFrame& body, const Eigen::Vector2d& axis, double lo,
   return r;
 }
 
+// a front and a back panel wrapped on a cylinder of `radius` [cm] round the axis through `axis` (x, z) [m], their
+// lowest edge at `hem_h` [m], tilted by `roll_deg` (the back, turned by its yaw, the other way: roll turns a panel
+// before yaw)
+void place_front_and_back(const BodyFrame& body, const Eigen::Vector2d& axis, double hem_h, double radius,
+                          double roll_deg, Panel& front, Panel& back) {
+  const Box3 box = bounding_box(body.positions);
+  const Vec3 size = box.size();
+  Placement& f = front.placement;
+  f.anchor = Vec3(Real((axis.x() - box.min.x()) / size.x()), Real((hem_h - box.min.y()) / size.y()),
+                  Real((axis.y() - box.min.z()) / size.z()));
+  f.offset_cm = Vec3(0, 0, Real(radius));
+  f.wrap_radius_cm = Real(radius);
+  f.roll_deg = Real(roll_deg);
+  back.placement = f;
+  back.placement.offset_cm.z() = -Real(radius);
+  back.placement.yaw_deg = 180;
+  back.placement.roll_deg = Real(0) - f.roll_deg;  // 0 - 0 is +0: an upright pattern file says roll 0
+}
+
 // a front and a back panel wrapped round a vertical axis through `centre` (x, z) [m], their lowest edge at
 // `hem_h` [m]: on a cylinder that holds half the widest girth across each panel and clears the body's sections
 // between `lo` and `hi` by kClearanceCm on every side (the side seams then start apart where the body is wider
 // than deep, and sewing closes them)
 void wrap_front_and_back(const BodyFrame& body, const Eigen::Vector2d& centre, double hem_h, double half_girth_cm,
                          double lo, double hi, Panel& front, Panel& back) {
-  const Box3 box = bounding_box(body.positions);
   const double radius = std::max(half_girth_cm / M_PI, 100 * reach_from(body, centre, lo, hi) + kClearanceCm);
-  const Vec3 size = box.size();
-  Placement& f = front.placement;
-  f.anchor = Vec3(Real((centre.x() - box.min.x()) / size.x()), Real((hem_h - box.min.y()) / size.y()),
-                  Real((centre.y() - box.min.z()) / size.z()));
-  f.offset_cm = Vec3(0, 0, Real(radius));
-  f.wrap_radius_cm = Real(radius);
-  back.placement = f;
-  back.placement.offset_cm.z() = -Real(radius);
-  back.placement.yaw_deg = 180;
+  place_front_and_back(body, centre, hem_h, radius, 0, front, back);
 }
 
 // the edges above the side seam of a front or back bodice, from the side's top (chest_half, armpit_y): the armhole
@@ -272,8 +282,6 @@ Pattern draft_trousers(const BodyFrame& body, const BodyMeasurements& m, double 
   // clears the thigh by kClearanceCm
   const auto thighs = legs_at(body, thigh_h), knees = legs_at(body, knee_h);
   const double leg_half = (100 * m["thigh girth"].value_m + ease_cm) / 4;
-  const Box3 box = bounding_box(body.positions);
-  const Vec3 size = box.size();
   for (int side = 0; side < 2; ++side) {  // 0: left (+x), 1: right
     const Eigen::Vector2d axis = thighs[static_cast<std::size_t>(side)].centroid();
     // the leg's half of the body from the thigh up to the waist, which the panel covers (the legs' and the pelvis's
@@ -290,18 +298,7 @@ Pattern draft_trousers(const BodyFrame& body, const BodyMeasurements& m, double 
     const double radius = std::max(2 * leg_half / M_PI, 100 * reach + kClearanceCm);
     const double tilt =
         180 / M_PI * std::atan((knees[static_cast<std::size_t>(side)].centroid().x() - axis.x()) / (thigh_h - knee_h));
-    Placement front;
-    front.anchor = Vec3(Real((axis.x() - box.min.x()) / size.x()), Real((hem_h - box.min.y()) / size.y()),
-                        Real((axis.y() - box.min.z()) / size.z()));
-    front.offset_cm = Vec3(0, 0, Real(radius));
-    front.wrap_radius_cm = Real(radius);
-    front.roll_deg = Real(tilt);
-    Placement back = front;
-    back.offset_cm.z() = -Real(radius);
-    back.yaw_deg = 180;
-    back.roll_deg = -Real(tilt);  // roll turns the panel before yaw
-    p.panels[side == 0 ? 0 : 1].placement = front;
-    p.panels[side == 0 ? 2 : 3].placement = back;
+    place_front_and_back(body, axis, hem_h, radius, tilt, p.panels[side == 0 ? 0 : 1], p.panels[side == 0 ? 2 : 3]);
   }
   sew(p, 0, "outseam", 2, "outseam"), sew(p, 0, "inseam", 2, "inseam");  // the left leg
   sew(p, 1, "outseam", 3, "outseam"), sew(p, 1, "inseam", 3, "inseam");  // the right leg

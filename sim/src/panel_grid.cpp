@@ -170,10 +170,10 @@ void connect_grid(const Panel& p, const GridFrame& f, const std::vector<int>& id
     }
 }
 
-// The grid node for a pattern point: the nearest row, and of the two nearest columns the one farther from the grid's
-// middle, so that a panel drawn on the grid is no narrower anywhere than its pattern (a waistband rounded in would
-// not close round the waist)
-std::array<int, 2> nearest_node(const GridFrame& f, const Vec2d& q) {
+// The grid node a pattern point is drawn on: the nearest row, and of the two nearest columns the one farther from the
+// grid's middle, so that a panel drawn on the grid is no narrower anywhere than its pattern (a waistband rounded in
+// would not close round the waist)
+std::array<int, 2> drawn_node(const GridFrame& f, const Vec2d& q) {
   const Vec2d at = (q - f.origin) / f.h;
   const double middle = 0.5 * (f.nx - 1),
                column = at.x() > middle ? std::ceil(at.x() - 1e-9) : std::floor(at.x() + 1e-9);
@@ -214,7 +214,7 @@ PanelGrid grid_panel(const Panel& p, double h) {
 
 namespace {
 
-// Durupinar's steps 1-4: the outline's points on grid nodes (nearest_node), joined by Bresenham lines, their nodes
+// Durupinar's steps 1-4: the outline's points on grid nodes (drawn_node), joined by Bresenham lines, their nodes
 // kept (`id`) as boundary vertices; each edge's nodes, in order, make its run, at the arc fractions of the staircase
 // drawn for it (a seam's mirrored edges, drawn alike, then pair node for node). `staircase` gets the outline drawn.
 void draw_outline(const Panel& p, const GridFrame& f, PanelGrid& g, std::vector<int>& id, Panel& staircase) {
@@ -231,14 +231,13 @@ void draw_outline(const Panel& p, const GridFrame& f, PanelGrid& g, std::vector<
     }
     return id[k];
   };
-  std::array<int, 2> at = nearest_node(f, p.outline[0]);
+  std::array<int, 2> at = drawn_node(f, p.outline[0]);
   for (int e = 0; e < p.edge_count(); ++e) {
     const int s0 = p.edge_begin[static_cast<std::size_t>(e)];
     const int s1 = e + 1 < p.edge_count() ? p.edge_begin[static_cast<std::size_t>(e + 1)] : n;
     std::vector<std::array<int, 2>> drawn{at};
     for (int s = s0; s < s1; ++s)
-      for (const auto& node :
-           bresenham(drawn.back(), nearest_node(f, p.outline[static_cast<std::size_t>((s + 1) % n)])))
+      for (const auto& node : bresenham(drawn.back(), drawn_node(f, p.outline[static_cast<std::size_t>((s + 1) % n)])))
         drawn.push_back(node);
     at = drawn.back();
     std::vector<double> arc{0};
