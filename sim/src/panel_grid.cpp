@@ -102,19 +102,38 @@ void place_grid_vertices(const Panel& p, const GridFrame& f, PanelGrid& g, std::
       if ((u - q).norm() < 0.3 * h) return true;
     return false;
   };
+  // the ring, in two passes over the nodes as the loop above left them (so that a panel and its mirror image get the
+  // same ring: read while it is filled, the ring grew along the scan, one node farther out along an edge the rows
+  // climb, leaving no cell between it and the kept nodes): first the nodes next to a kept node, then the nodes next
+  // to those that are a kept node's diagonal neighbour (the outside corners of a cell the outline cuts near a corner)
+  const auto snap = [&](std::size_t k, int i, int j) {
+    const Closest c = closest_on_outline(p.outline, node(i, j));
+    if (near_kept(c.point)) return;
+    id[k] = static_cast<int>(g.uv.size());
+    g.uv.push_back(c.point);
+    g.boundary.push_back(1);
+    add_to_edges(p, c.point, id[k], g.edge_vertices);
+  };
+  const auto nx_ = static_cast<std::size_t>(nx);
+  const auto any_of = [&](const std::vector<int>& ids, std::size_t k, std::initializer_list<std::ptrdiff_t> steps) {
+    for (const auto d : steps)
+      if (ids[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(k) + d)] >= 0) return true;
+    return false;
+  };
+  const auto row = static_cast<std::ptrdiff_t>(nx_);
+  const std::vector<int> kept = id;
+  std::vector<int> first(id.size(), -1);
   for (int j = 1; j + 1 < ny; ++j)
     for (int i = 1; i + 1 < nx; ++i) {
-      const auto k = static_cast<std::size_t>(j * nx + i);
-      if (id[k] >= 0) continue;
-      const bool ring = id[k - 1] >= 0 || id[k + 1] >= 0 || id[k - static_cast<std::size_t>(nx)] >= 0 ||
-                        id[k + static_cast<std::size_t>(nx)] >= 0;
-      if (!ring) continue;
-      const Closest c = closest_on_outline(p.outline, node(i, j));
-      if (near_kept(c.point)) continue;
-      id[k] = static_cast<int>(g.uv.size());
-      g.uv.push_back(c.point);
-      g.boundary.push_back(1);
-      add_to_edges(p, c.point, id[k], g.edge_vertices);
+      const auto k = static_cast<std::size_t>(j) * nx_ + static_cast<std::size_t>(i);
+      if (kept[k] < 0 && any_of(kept, k, {-1, 1, -row, row})) first[k] = 1, snap(k, i, j);
+    }
+  for (int j = 1; j + 1 < ny; ++j)
+    for (int i = 1; i + 1 < nx; ++i) {
+      const auto k = static_cast<std::size_t>(j) * nx_ + static_cast<std::size_t>(i);
+      if (kept[k] < 0 && first[k] < 0 && any_of(first, k, {-1, 1, -row, row}) &&
+          any_of(kept, k, {-row - 1, -row + 1, row - 1, row + 1}))
+        snap(k, i, j);
     }
   for (auto& ev : g.edge_vertices) std::sort(ev.begin(), ev.end());
 }
