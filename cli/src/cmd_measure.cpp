@@ -74,7 +74,9 @@ void add_measure_command(CLI::App& app, Action& action) {
   cmd->add_option("--animation", args->animation, "animation name (default: the rest pose)");
   cmd->add_option("--at", args->at, "time in the animation [s]")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", args->json, "print JSON");
-  cmd->add_option("--draft", args->draft, "draft a garment from the measurements: skirt, shirt, dress or trousers");
+  std::string types;
+  for (const std::string& t : draft_types()) types += (types.empty() ? "" : ", ") + t;
+  cmd->add_option("--draft", args->draft, "draft a garment from the measurements: " + types);
   auto* size =
       cmd->add_option("--size", args->size, "the garment's size: its ease at the hip, S 4, M 8, L 12, XL 16 cm")
           ->check(CLI::IsMember(draft_sizes()))

@@ -30,6 +30,10 @@ constexpr double kTrousersWaistEaseCm = 4;
 constexpr double kCrotchDrop = 0.08;
 // how far below the knee's section the trousers end [m]
 constexpr double kHemBelowKnee = 0.04;
+// a sleeve's length under the arm, from the cuff to the armpit [cm]: a short sleeve over the upper arm
+constexpr double kSleeveUnderCm = 10;
+// how far below the armpit the arm's axis is taken, between two sections this far apart [m]
+constexpr double kArmSectionBelow = 0.04, kArmSectionSpan = 0.12;
 // how far below the armpit a bodice's side seam ends [m]
 constexpr double kBelowArmpit = 0.03;
 // how far above the shoulder's top a bodice's shoulder seam is cut, as a fraction of the chest's depth at the
@@ -307,6 +311,81 @@ Pattern draft_trousers(const BodyFrame& body, const BodyMeasurements& m, double 
   return p;
 }
 
+// the arm's section at height h on one side (side > 0: the left, +x): of the loops besides the torso's, the one
+// farthest out on that side
+SectionLoop arm_at(const BodyFrame& body, double h, int side) {
+  const auto loops = cross_section(body, h);
+  const SectionLoop* best = nullptr;
+  for (std::size_t k = 1; k < loops.size(); ++k)
+    if (loops[k].area() > 0.01 * loops[0].area() && side * loops[k].centroid().x() > 0 &&
+        (!best || side * loops[k].centroid().x() > side * best->centroid().x()))
+      best = &loops[k];
+  if (!best)
+    throw std::invalid_argument("draft: no arm apart from the torso " + std::to_string(static_cast<int>(100 * h)) +
+                                " cm above the soles");
+  return *best;
+}
+
+// the cap's height whose edge, a quadratic curve from the underarm corner across half the sleeve's width to the cap's
+// top, is `length` long [cm] (its control at the top's height, 0.45 of the way across, as garments/shirt_sleeves has
+// it); a cap narrower than the armhole is long, one wider is given a spacing's rise
+double cap_height(double half_width, double length) {
+  const auto curve_length = [&](double height) {
+    const std::vector<Vec2d> q = quad({0, 0}, {0.45 * half_width, height}, {half_width, height});
+    double l = 0;
+    Vec2d at(0, 0);
+    for (const Vec2d& p : q) l += (p - at).norm(), at = p;
+    return l;
+  };
+  double lo = 1, hi = 3 * length;
+  if (curve_length(lo) >= length) return lo;
+  for (int k = 0; k < 60; ++k) (curve_length(0.5 * (lo + hi)) < length ? lo : hi) = 0.5 * (lo + hi);
+  return 0.5 * (lo + hi);
+}
+
+// short sleeves for a shirt (Durupinar section 2's sleeve from the upper arm's girth): one panel per arm, wrapped
+// into a tube round the upper arm (its girth plus the ease) and sewn to itself under the arm, its cap's two edges
+// sewn to the front's and the back's armholes, tilted as the arm is between two sections below the armpit (as
+// garments/shirt_sleeves.pattern is laid out: u round the arm, the two under edges meeting under it, v up the arm)
+void add_sleeves(Pattern& p, const BodyFrame& body, const BodyMeasurements& m, double ease_cm) {
+  const double r = (100 * m["upper arm girth"].value_m + ease_cm) / (2 * M_PI), turn = 2 * M_PI * r;
+  const double u0 = -2.5 * M_PI * r;  // the under edges face the armpit once the tube is tilted
+  const Panel& front = p.panels[0];
+  const double armhole =
+      edge_length_cm(front, static_cast<int>(std::find(front.edge_names.begin(), front.edge_names.end(), "armhole_r") -
+                                             front.edge_names.begin()));
+  const double cap = cap_height(turn / 2, armhole), top = kSleeveUnderCm + cap;
+  Panel left;
+  left.name = "sleeve_l";
+  left.outline.push_back({u0, 0});
+  edge(left, "cuff", {{u0 + turn, 0}});
+  edge(left, "under_a", {{u0 + turn, kSleeveUnderCm}});
+  edge(left, "cap_back", quad({u0 + turn, kSleeveUnderCm}, {u0 + turn - 0.45 * turn / 2, top}, {u0 + turn / 2, top}));
+  edge(left, "cap_front", quad({u0 + turn / 2, top}, {u0 + 0.45 * turn / 2, top}, {u0, kSleeveUnderCm}));
+  edge(left, "under_b", {});
+  Panel right = mirrored(left, "sleeve_r");
+  const Box3 box = bounding_box(body.positions);
+  const double armpit_h = m["armpit height"].height_m, h1 = armpit_h - kArmSectionBelow, h2 = h1 - kArmSectionSpan;
+  for (Panel* sleeve : {&left, &right}) {
+    const int side = sleeve == &left ? 1 : -1;
+    const Eigen::Vector2d a = arm_at(body, h1, side).centroid(), b = arm_at(body, h2, side).centroid();
+    // the arm's direction down from the armpit, in the body's front plane; the cuff's centre kSleeveUnderCm down it
+    const Vec3 down = Vec3(Real(b.x() - a.x()), Real(h2 - h1), 0).normalized();
+    const Vec3 cuff = Vec3(Real(a.x()), Real(h1), Real(a.y())) + Real(kSleeveUnderCm / 100) * down;
+    Placement& pl = sleeve->placement;
+    pl.anchor = (cuff - box.min).cwiseQuotient(box.size());
+    pl.offset_cm = Vec3(0, 0, Real(r));  // the tube's axis lies r behind the panel's origin
+    pl.wrap_radius_cm = Real(r);
+    pl.roll_deg = Real(180 / M_PI * std::atan2(down.x(), -down.y()));  // +v turned up the arm
+  }
+  p.panels.push_back(std::move(left));
+  p.panels.push_back(std::move(right));
+  sew(p, 2, "under_a", 2, "under_b"), sew(p, 3, "under_a", 3, "under_b");
+  sew(p, 2, "cap_front", 0, "armhole_r"), sew(p, 2, "cap_back", 1, "armhole_l");
+  sew(p, 3, "cap_front", 0, "armhole_l"), sew(p, 3, "cap_back", 1, "armhole_r");
+  p.name = "shirt_sleeves";
+}
+
 }  // namespace
 
 std::vector<std::string> draft_sizes() { return {"S", "M", "L", "XL"}; }
@@ -318,7 +397,7 @@ double size_ease_cm(const std::string& size) {
   throw std::invalid_argument("size: unknown size '" + size + "' (S, M, L, XL)");
 }
 
-std::vector<std::string> draft_types() { return {"skirt", "shirt", "dress", "trousers"}; }
+std::vector<std::string> draft_types() { return {"skirt", "shirt", "shirt_sleeves", "dress", "trousers"}; }
 
 Pattern draft_garment(const std::string& type, const BodyFrame& body, const BodyMeasurements& m, double ease_cm) {
   if (!(ease_cm >= 0 && ease_cm <= 100))
@@ -331,7 +410,8 @@ Pattern draft_garment(const std::string& type, const BodyFrame& body, const Body
   }
   Pattern p = type == "skirt"      ? draft_skirt(body, m, ease_cm)
               : type == "trousers" ? draft_trousers(body, m, ease_cm)
-                                   : draft_bodice(type, body, m, ease_cm);
+                                   : draft_bodice(type == "dress" ? type : "shirt", body, m, ease_cm);
+  if (type == "shirt_sleeves") add_sleeves(p, body, m, ease_cm);
   validate_pattern(p);
   return p;
 }

@@ -137,7 +137,37 @@ TEST(Draft, AShirtAndADressHaveTheChestAndHipGirthsPlusTheEase) {
   for (const char* type : {"shirt", "dress"})
     for (const double ease : {4.0, 16.0}) expect_a_bodice(type, rest, m, ease);
   const std::vector<std::string> types = draft_types();
-  EXPECT_EQ(types, (std::vector<std::string>{"skirt", "shirt", "dress", "trousers"}));
+  EXPECT_EQ(types, (std::vector<std::string>{"skirt", "shirt", "shirt_sleeves", "dress", "trousers"}));
+}
+
+// a shirt with sleeves drafted from Debian's human: the sleeveless shirt's front and back, and a sleeve per arm as
+// wide as the upper arm's girth plus the ease, its cap's two edges as long as the armholes they are sewn to, sewn to
+// itself under the arm; the right sleeve mirrors the left, and each is tilted down and out as its arm is
+TEST(Draft, SleevesHaveTheUpperArmGirthPlusTheEaseAndCapsAsLongAsTheArmholes) {
+  if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const BodyFrame rest = load_body("debian:human").rest();
+  const BodyMeasurements m = measure_body(rest);
+  const double ease = 8;
+  const Pattern shirt = draft_garment("shirt", rest, m, ease), p = draft_garment("shirt_sleeves", rest, m, ease);
+  ASSERT_EQ(p.panels.size(), 4u);
+  ASSERT_EQ(p.seams.size(), shirt.seams.size() + 6);
+  for (std::size_t k = 0; k < 2; ++k) EXPECT_EQ(p.panels[k].outline, shirt.panels[k].outline);
+  for (const Seam& s : p.seams)
+    EXPECT_NEAR(edge_length_cm(p.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a),
+                edge_length_cm(p.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b), 1e-3)
+        << edge_label(p, s.panel_a, s.edge_a);
+  const Panel &left = p.panels[2], &right = p.panels[3];
+  const auto cuff = std::find(left.edge_names.begin(), left.edge_names.end(), "cuff") - left.edge_names.begin();
+  EXPECT_NEAR(edge_length_cm(left, static_cast<int>(cuff)), 100 * m["upper arm girth"].value_m + ease, 1e-6);
+  for (const Vec2d& q : left.outline)
+    EXPECT_TRUE(std::any_of(right.outline.begin(), right.outline.end(),
+                            [&](const Vec2d& r) { return (r - Vec2d(-q.x(), q.y())).norm() < 1e-9; }));
+  // the left arm (+x) slopes down and out: the sleeve's v (up its arm) turned towards -x, the right's the other way
+  EXPECT_GT(left.placement.roll_deg, 20);
+  EXPECT_LT(left.placement.roll_deg, 70);
+  EXPECT_NEAR(right.placement.roll_deg, -left.placement.roll_deg, 5);
+  EXPECT_GT(left.placement.anchor.x(), 0.5);
+  EXPECT_LT(right.placement.anchor.x(), 0.5);
 }
 
 // trousers drafted from Debian's human: four panels, each leg's front and back sewn at its sides, the two fronts and
