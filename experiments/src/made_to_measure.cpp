@@ -39,14 +39,20 @@ std::string landmark_word(const char* landmark) {
   const std::string l(landmark);
   return l.substr(0, l.find(' '));
 }
-// a garment type: its vertex count (its dressing scene's; the shirt's raised to the skirt's), and the landmark
-// where its size's ease tells, at which the fit is judged (the shirt ends above the hip)
+// a garment type: the dressing scene it is run in (scenes/dressing), its vertex count (the scene's; the shirt's raised
+// to the skirt's, with sleeves to the dress's), and the landmark where its size's ease tells, at which the fit is
+// judged (the shirt ends above the hip)
 struct Type {
   const char* name;
+  const char* scene;
   int vertices;
   int judged_at;  // index into kLandmarks
 };
-const Type kTypes[] = {{"skirt", 600, 2}, {"shirt", 600, 0}, {"dress", 800, 2}, {"trousers", 800, 2}};
+const Type kTypes[] = {{"skirt", "skirt", 600, 2},
+                       {"shirt", "shirt", 600, 0},
+                       {"shirt_sleeves", "shirt", 800, 0},
+                       {"dress", "dress", 800, 2},
+                       {"trousers", "trousers", 800, 2}};
 
 // how far the cloth sits off the body round one landmark, as a tape round the garment there would show it: the
 // points where the cloth's structural springs cross the landmark's height, their mean and largest distance outside
@@ -212,7 +218,7 @@ std::vector<std::string> summary(const std::vector<Row>& rows) {
   const auto line = [&](const Tally& t, const std::string& how) {
     return how + ": size M dresses its body within every limit in " + std::to_string(t.m_meets) + " of " +
            std::to_string(t.pairs) + " garment and body pairs" + except(t.m_misses) +
-           "; the mean gap grows from S to XL (at the hip; the shirt's at the bust) in " + std::to_string(t.grows) +
+           "; the mean gap grows from S to XL (at the hip; the shirts' at the bust) in " + std::to_string(t.grows) +
            " of " + std::to_string(t.pairs) + except(t.flat) + "; " + std::to_string(t.meet) + " of " +
            std::to_string(t.rows) + " rows within every limit; " + std::to_string(t.clean) + " of " +
            std::to_string(t.rows) + " garments without a structural spring under half a spacing (" +
@@ -240,14 +246,15 @@ std::vector<std::string> summary(const std::vector<Row>& rows) {
 }
 
 const char* const kDescription =
-    "Each garment type `clothbench measure --draft` knows (skirt, sleeveless shirt, sleeveless dress, knee-length "
-    "trousers) is drafted "
+    "Each garment type `clothbench measure --draft` knows (skirt, sleeveless shirt, shirt with short sleeves, "
+    "sleeveless dress, knee-length trousers) is drafted "
     "from each body's own measurements (Durupinar section 2; `[[garment]] fit`, scenes/README.md, says how the "
     "panels are cut) in sizes S, M, L and XL, meshed in two ways (`garment.on_grid`): the ring of grid nodes snapped "
     "onto the outline (the default), and Durupinar's construction (the outline's points moved to grid nodes, joined "
     "by Bresenham lines and filled, every vertex a grid node); then sewn and draped on that body standing still, with "
     "the settings of its scene in scenes/dressing (is-cpu, the stable regime) and face "
-    "queries (quad midpoints too, as skirt.toml has them), at 600 vertices (the dress and the trousers 800). The "
+    "queries (quad midpoints too, as skirt.toml has them; the shirt with sleeves in shirt.toml's), at 600 vertices "
+    "(the shirt with sleeves, the dress and the trousers 800). The "
     "bodies, in their rest "
     "pose: Debian's human; the "
     "walking body; a taller MakeHuman body (scenes/data/body/mh_female_tall.obj, made by tools/make_body.py from the "
@@ -276,8 +283,8 @@ void made_to_measure(ExperimentContext& ctx) {
       for (const bool on_grid : {false, true}) {
         std::vector<double> x, y;
         for (const std::string& size : draft_sizes()) {
-          const RunResult& r =
-              ctx.run("dressing/" + std::string(type.name) + ".toml", "is-cpu", overrides(ctx, b, type, on_grid, size));
+          const RunResult& r = ctx.run("dressing/" + std::string(type.scene) + ".toml", "is-cpu",
+                                       overrides(ctx, b, type, on_grid, size));
           ctx.add_run(r,
                       "made-to-measure/" + std::string(b.label) + "/" + type.name + "/" + mesher(on_grid) + "/" + size);
           if (!m) m = measure_body(r.final_body);
