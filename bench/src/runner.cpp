@@ -24,6 +24,7 @@
 #include "clothbench/sim/body_measure.hpp"
 #include "clothbench/sim/garment.hpp"
 #include "clothbench/sim/garment_draft.hpp"
+#include "clothbench/sim/layers.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
 #include "dressing.hpp"
 #include "measurement.hpp"
@@ -108,6 +109,14 @@ const BodyFrame& pose_body(Rig& rig, RunResult& r) {
   return exact;
 }
 
+// how far an outer layer of garments starts clear of the cloth dressed under it, at least [m]: a few millimetres of
+// the cloth's own thickness and of the cloth under it sagging while the new layer is sewn
+constexpr Real kLayerClearance = 0.01f;
+// how far from the dressed cloth an outer layer's point may start and still be moved clear of it [m]: farther than
+// the outer garment's placement clears the body by (garment_draft.cpp), so a point placed inside the dressed cloth
+// is always moved
+constexpr Real kLayerReach = 0.1f;
+
 // a garment of type g.fit drafted from the body's measurements (Durupinar section 2) at the dressing pose
 Pattern fitted_pattern(const Scene& scene, const GarmentSpec& g, const BodyFrame& body) {
   try {
@@ -117,41 +126,49 @@ Pattern fitted_pattern(const Scene& scene, const GarmentSpec& g, const BodyFrame
   }
 }
 
-// every garment of the scene meshed and placed on the exact body (a jittered placement moved by its seed's offset)
-ClothMesh build_cloth(const Scene& scene, const BodyFrame& body) {
-  if (scene.garments.empty()) throw InputError(located(scene.path, 0, "the scene has no [[garment]]"));
-  ClothMesh cloth;
-  std::map<std::string, int> worn;  // how many garments of each pattern name so far
-  for (const auto& g : scene.garments) {
-    const std::string path = g.fit.empty() ? resolve_scene_path(scene, g.file) : scene.path;
-    const Pattern pattern = g.fit.empty() ? load_pattern(path) : fitted_pattern(scene, g, body);
-    const int nth = ++worn[pattern.name];
-    for (const std::string& w : seam_length_warnings(pattern))
-      std::fprintf(stderr, "clothbench: warning: %s: %s\n", path.c_str(), w.c_str());
-    MeshingOptions options;
-    options.target_vertices = g.vertices;
-    options.spacing_cm = g.vertices > 0 ? 0 : g.spacing_cm;
-    options.attach = g.attach;
-    options.on_grid = g.on_grid;
-    try {
-      ClothMesh garment = build_garment(pattern, options, body);
-      if (g.jitter_mm > 0) {  // a jittered placement: one random offset for the whole garment, from its seed
-        std::mt19937 rng(static_cast<std::mt19937::result_type>(g.seed));
-        std::uniform_real_distribution<Real> u(Real(-g.jitter_mm * 1e-3), Real(g.jitter_mm * 1e-3));
-        const Vec3 offset(u(rng), u(rng), u(rng));
-        garment.positions.colwise() += offset;
-      }
-      // with several garments a panel is named after its garment too ("shirt.front", "skirt.front"; a pattern
-      // worn again is numbered, "skirt#2.front"), so that what a run reports says which garment it means
-      if (scene.garments.size() > 1)
-        for (std::string& name : garment.panel_names)
-          name = pattern.name + (nth > 1 ? "#" + std::to_string(nth) : "") + "." + name;
-      cloth.append(garment);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(located(path, 0, e.what()));
+// one garment of the scene meshed and placed on the exact body (a jittered placement moved by its seed's offset);
+// `worn`: how many garments of each pattern name the scene has listed before it
+ClothMesh garment_cloth(const Scene& scene, const GarmentSpec& g, const BodyFrame& body,
+                        std::map<std::string, int>& worn) {
+  const std::string path = g.fit.empty() ? resolve_scene_path(scene, g.file) : scene.path;
+  const Pattern pattern = g.fit.empty() ? load_pattern(path) : fitted_pattern(scene, g, body);
+  const int nth = ++worn[pattern.name];
+  for (const std::string& w : seam_length_warnings(pattern))
+    std::fprintf(stderr, "clothbench: warning: %s: %s\n", path.c_str(), w.c_str());
+  MeshingOptions options;
+  options.target_vertices = g.vertices;
+  options.spacing_cm = g.vertices > 0 ? 0 : g.spacing_cm;
+  options.attach = g.attach;
+  options.on_grid = g.on_grid;
+  try {
+    ClothMesh garment = build_garment(pattern, options, body);
+    if (g.jitter_mm > 0) {  // a jittered placement: one random offset for the whole garment, from its seed
+      std::mt19937 rng(static_cast<std::mt19937::result_type>(g.seed));
+      std::uniform_real_distribution<Real> u(Real(-g.jitter_mm * 1e-3), Real(g.jitter_mm * 1e-3));
+      const Vec3 offset(u(rng), u(rng), u(rng));
+      garment.positions.colwise() += offset;
     }
+    // with several garments a panel is named after its garment too ("shirt.front", "skirt.front"; a pattern
+    // worn again is numbered, "skirt#2.front"), so that what a run reports says which garment it means
+    if (scene.garments.size() > 1)
+      for (std::string& name : garment.panel_names)
+        name = pattern.name + (nth > 1 ? "#" + std::to_string(nth) : "") + "." + name;
+    return garment;
+  } catch (const std::invalid_argument& e) {
+    throw InputError(located(path, 0, e.what()));
   }
-  return cloth;
+}
+
+// the scene's garments meshed and placed on the exact body, one cloth per layer ([[garment]] layer), the lowest
+// layer first; a layer's garments in the order the scene lists them
+std::vector<ClothMesh> build_layers(const Scene& scene, const BodyFrame& body) {
+  if (scene.garments.empty()) throw InputError(located(scene.path, 0, "the scene has no [[garment]]"));
+  std::map<int, ClothMesh> layers;
+  std::map<std::string, int> worn;  // how many garments of each pattern name so far
+  for (const auto& g : scene.garments) layers[g.layer].append(garment_cloth(scene, g, body, worn));
+  std::vector<ClothMesh> out;
+  for (auto& [layer, cloth] : layers) out.push_back(std::move(cloth));
+  return out;
 }
 
 std::unique_ptr<Collider> make_scene_collider(const Scene& scene, const std::string& name, const BodySource& body) {
@@ -213,13 +230,45 @@ void set_up_simulator(const Scene& scene, ClothMesh cloth, Rig& rig, RunResult& 
   r.k_structural = sim.stiffness(SpringKind::kStructural);
 }
 
-// sew -> attach -> drape -> animate, the ETA planned over what is left; a diverged simulation stops there
-void run_phases(const RunContext& run, const Budget& budget, RunResult& r) {
-  run.progress.plan(budget.total());
-  sew(run, r);
-  attach(run);
-  run.progress.plan(budget.drape + budget.animate);
-  if (!run.sim.divergence()) drape(run, r);
+// a phase of one layer's dressing added to the run's (whether each was reached is the caller's)
+void add_phase(PhaseResult& run, const PhaseResult& layer) {
+  run.iterations += layer.iterations, run.wall_ms += layer.wall_ms, run.cpu_ms += layer.cpu_ms;
+  run.cdr_ms += layer.cdr_ms, run.cs_ms += layer.cs_ms, run.limit_ms += layer.limit_ms;
+}
+
+// the next layer of garments placed clear of the cloth dressed so far (by twice the cloth's thickness, at least
+// kLayerClearance) and joined to it, one simulator for both: the dressed cloth where it lies, at rest; its seams,
+// closed, merge again at the first step
+void wear_next_layer(const RunContext& run, Rig& rig, ClothMesh next, RunResult& r) {
+  ClothMesh worn = run.sim.mesh();
+  worn.positions = run.sim.positions();
+  clear_of_layer(worn.positions, worn.quads, next.positions,
+                 std::max(kLayerClearance, 2 * run.scene.solver.self_contact), kLayerReach);
+  worn.append(next);
+  set_up_simulator(run.scene, std::move(worn), rig, r);
+}
+
+// sew -> attach -> drape for each layer of garments (the next worn over the dressed ones, then all of them sewn and
+// draped together) -> animate, the ETA planned over what is left; a diverged simulation stops there
+void run_phases(const RunContext& run, Rig& rig, std::vector<ClothMesh>& layers, const Budget& budget, RunResult& r) {
+  bool sewn = true, settled = true;  // every layer
+  for (std::size_t k = 0; k < layers.size() && !run.sim.divergence(); ++k) {
+    if (k > 0) wear_next_layer(run, rig, std::move(layers[k]), r);
+    RunResult layer;
+    run.progress.plan(budget.total());
+    sew(run, layer);
+    attach(run);
+    run.progress.plan(budget.drape + budget.animate);
+    if (!run.sim.divergence()) drape(run, layer);
+    if (k == 0)
+      r.sew = layer.sew, r.drape = layer.drape;
+    else
+      add_phase(r.sew, layer.sew), add_phase(r.drape, layer.drape);
+    r.sew_iteration_ms.insert(r.sew_iteration_ms.end(), layer.sew_iteration_ms.begin(), layer.sew_iteration_ms.end());
+    sewn = sewn && (layer.sew.reached || !run.scene.stop.sew || run.sim.mesh().seam_pairs.cols() == 0);
+    settled = settled && layer.drape.reached;
+  }
+  if (layers.size() > 1) r.sew.reached = sewn, r.drape.reached = settled;
   run.progress.plan(budget.animate);
   if (!run.sim.divergence()) animate(run, r);
   r.divergence = run.sim.divergence();
@@ -247,10 +296,15 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   RunResult r = configuration(scene);
   // body, cloth, collider, simulator
   Rig rig(scene);
-  ClothMesh cloth = build_cloth(scene, pose_body(rig, r));
+  std::vector<ClothMesh> layers = build_layers(scene, pose_body(rig, r));
   set_up_colliders(scene, rig, r);
-  warn_start_inside(scene, cloth, rig.dressing_collider());
-  set_up_simulator(scene, std::move(cloth), rig, r);
+  for (const ClothMesh& layer : layers) warn_start_inside(scene, layer, rig.dressing_collider());
+  if (layers.size() > 1 && scene.solver.self_contact <= 0)
+    std::fprintf(stderr,
+                 "clothbench: warning: %s: garments dressed in %zu layers without cloth against cloth "
+                 "(solver.self_contact_mm = 0): an outer layer may pass through the one under it\n",
+                 scene.path.c_str(), layers.size());
+  set_up_simulator(scene, std::move(layers[0]), rig, r);
   // up front: how long it may take
   const std::string label = options.label.empty() ? scene.name + "/" + scene.collider : options.label;
   const Budget budget = iteration_budget(scene, rig.source, *rig.sim);
@@ -271,7 +325,7 @@ RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   Progress progress(options.progress, label, *rig.sim);
   const RunContext run{scene,    options, rig.source, rig.frame, *rig.collider, rig.dressing_collider(),
                        *rig.sim, progress};
-  run_phases(run, budget, r);
+  run_phases(run, rig, layers, budget, r);
   finish(run, rig.exact_scratch, before, r);
   return r;
 }

@@ -220,6 +220,8 @@ void visit_fields(G& g, V& v) {
     Flag{});
   v(Key{"jitter_mm", "mm", "> 0: the placed garment moved by a random offset"}, g.jitter_mm, Range{0, 100});
   v(Key{"seed", "", "the jitter's random seed"}, g.seed, Range{0, 1e9});
+  v(Key{"layer", "", "dressed a layer at a time, the lowest first, each outside those before", Hash::kWhenNonzero},
+    g.layer, Range{0, 16});
 }
 
 // [collider]: the collider's name, the dressing one's, and every collider's options

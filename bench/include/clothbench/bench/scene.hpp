@@ -50,6 +50,8 @@ struct GarmentSpec {
   bool on_grid = false;    ///< Durupinar's construction: the outline drawn on the grid (MeshingOptions::on_grid)
   double jitter_mm = 0;    ///< > 0: the placed garment moved by a random offset, each axis uniform in +-jitter_mm
   int seed = 0;            ///< the jitter's random seed (deterministic: one seed, one placement)
+  int layer = 0;           ///< garments are dressed a layer at a time, the lowest first, each placed clear of those
+                           ///< dressed before it (clear_of_layer); garments of one layer are dressed together
 };
 
 /// When each phase ends (definitions printed in every table header).
