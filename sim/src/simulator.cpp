@@ -238,6 +238,15 @@ bool Simulator::step() {
   limit.restart();
   if (params_.limit_after_response && collider_) limiter_->limit_velocities(state, true);
   limit_ms += limit.ms();
+  // cloth against itself once more, last: the limit's second pass moves points along their springs and can carry
+  // one through the cloth the first answer stopped it at; then the body's non-penetration again, which that answer
+  // may have undone for a point between the body and the cloth
+  if (params_.self_contact > 0 && params_.self_contact_last) {
+    cdr.restart();
+    self_.respond(mesh_, merged_groups_, x_, v_, inv_m_, params_.self_contact);
+    hold_out_of_body();
+    cdr_ms += cdr.ms();
+  }
   integrate_positions();
   if (drifts) v_ -= drift_ / dt_;  // back to the end-of-step velocity, with what limits and response changed
   limit.restart();
@@ -318,6 +327,16 @@ void Simulator::attract_seams() {
     const Real speed = std::min(params_.attraction_speed, 0.5f * len / dt_);
     if (inv_m_[a] > 0) col(v_, a) = speed * d / len;
     if (inv_m_[b] > 0) col(v_, b) = -speed * d / len;
+  }
+}
+
+void Simulator::hold_out_of_body() {
+  if (!collider_) return;
+  for (Eigen::Index i = 0; i < x_.cols(); ++i) {
+    const Contact& c = contacts_[static_cast<std::size_t>(i)];
+    if (!c.hit || inv_m_[i] == 0) continue;
+    const Real into = (v_.col(i) - c.body_velocity).dot(c.normal);
+    if (into < 0) col(v_, i) -= into * c.normal;
   }
 }
 

@@ -46,6 +46,8 @@ void visit_fields(P& p, V& v) {
   v(Key{"push_speed", "m/s", "push_out's largest speed"}, p.push_speed, Range{1e-3, 100});
   v(Key{"self_contact_mm", "mm", "cloth against itself: the thickness (0: off)", Hash::kWhenNonzero}, p.self_contact,
     fields::Scaled{0, 100, 1e-3, 1e3});
+  v(Key{"self_contact_last", "", "cloth against itself answered again after the limit", Hash::kWhenNonzero},
+    p.self_contact_last, Flag{});
   v(Key{"limit", "", "the strain limiter (limiter_names())"}, p.limit, fields::checked(check_limiter));
   v(Key{"threshold", "", "elongation threshold of the limit (fraction)"}, p.threshold, Range{1e-4, 1});
   v(Key{"stiff_factor", "", "the stiff limit's stiffness factor"}, p.stiff_factor, Range{1, 1e4});
@@ -99,8 +101,7 @@ void visit_fields(O& o, V& v) {
   v(Key{"views", "", "image space: 2, 4 or 6 views"}, o.views,
     fields::OneOf{{2, 4, 6}, "2 (front/back), 4 (+ left/right) or 6 (+ top/bottom)"});
   v(Key{"layers", "", "image space: surfaces peeled per view pair"}, o.layers, Range{1, 8});
-  v(Key{"side_layer_mm", "mm", "image space: the side layer's width; 0 = one pixel"}, o.side_layer_mm,
-    Range{0, 1000});
+  v(Key{"side_layer_mm", "mm", "image space: the side layer's width; 0 = one pixel"}, o.side_layer_mm, Range{0, 1000});
   v(Key{"tangent_plane", "", "image space: refine by the tangent plane"}, o.tangent_plane, Flag{});
   v(Key{"query_margin_mm", "mm", "image space: map rows the cloth's box grown by this spans; 0 = all"},
     o.query_margin_mm, Range{0, 1e4});

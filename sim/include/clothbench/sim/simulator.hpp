@@ -87,6 +87,7 @@ struct SolverParams {
   bool push_out = true;                  ///< vertices found inside the body are moved to its surface (Durupinar Eq. 3)
   Real push_speed = 2.f;                 ///< push_out moves a vertex no faster than this [m/s]
   Real self_contact = 0;                 ///< cloth against itself: points nearer a triangle than this [m] are stopped (0: off)
+  bool self_contact_last = false;        ///< cloth against itself answered again after the limit's second pass
   bool reaction_force = false;           ///< add the reaction force of walking Eq. 16
   Vec3 gravity = Vec3(0, -kGravity, 0);  ///< [m/s^2]
   SeamMethod seam_method = SeamMethod::kElastic;
@@ -219,6 +220,7 @@ class Simulator {
   void cap_seam_speeds();
   void attract_seams();
   void respond();
+  void hold_out_of_body();  // no vertex in contact keeps a velocity into the body (relative to it)
   void integrate_positions();
   void merge_seams();
   void group_merged_pairs();
