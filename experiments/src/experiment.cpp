@@ -239,6 +239,7 @@ const std::vector<Experiment>& experiments() {
     add_walking_f8_experiments(e);
     add_durupinar_f6_experiments(e);
     add_made_to_measure_experiments(e);
+    add_cloth_cloth_experiments(e);
     add_integrators_experiments(e);
     add_limiters_experiments(e);
     add_stability_experiments(e);

@@ -14,6 +14,7 @@ void add_walking_t2_experiments(std::vector<Experiment>& out);
 void add_walking_f8_experiments(std::vector<Experiment>& out);
 void add_durupinar_f6_experiments(std::vector<Experiment>& out);
 void add_made_to_measure_experiments(std::vector<Experiment>& out);
+void add_cloth_cloth_experiments(std::vector<Experiment>& out);
 void add_integrators_experiments(std::vector<Experiment>& out);
 void add_limiters_experiments(std::vector<Experiment>& out);
 void add_stability_experiments(std::vector<Experiment>& out);
