@@ -17,16 +17,18 @@ constexpr double kClothCrossingsLimitPct = 1.0;
 
 // one way of answering the cloth against itself (scene keys)
 struct Method {
-  const char* label;
+  std::string label;
   std::vector<std::string> sets;
 };
+// the cloth's thickness where it is answered [mm]: the scenes' (outfit.toml)
+const std::string kThicknessMm = "5";
 // none; object space (a spatial hash of the cloth's triangles, Bridson, Fedkiw and Anderson 2002 section 7.1) answered
 // once a step, after the body's response; and answered again after the strain limit's second pass
 std::vector<Method> methods() {
-  return {
-      {"none", {"solver.self_contact_mm=0", "solver.self_contact_last=false"}},
-      {"object space, once a step (5 mm)", {"solver.self_contact_mm=5", "solver.self_contact_last=false"}},
-      {"object space, again after the limit (5 mm)", {"solver.self_contact_mm=5", "solver.self_contact_last=true"}}};
+  const std::string mm = " (" + kThicknessMm + " mm)", thickness = "solver.self_contact_mm=" + kThicknessMm;
+  return {{"none", {"solver.self_contact_mm=0", "solver.self_contact_last=false"}},
+          {"object space, once a step" + mm, {thickness, "solver.self_contact_last=false"}},
+          {"object space, again after the limit" + mm, {thickness, "solver.self_contact_last=true"}}};
 }
 
 // one scene of the page: its file, the motion it is run on ("" standing still) and how its garments are dressed
