@@ -154,8 +154,7 @@ void cloth_cloth(ExperimentContext& ctx) {
       if (ctx.quick())
         for (const std::string& q : quick_sets(c)) sets.push_back(q);
       const RunResult& r = ctx.run(c.scene, "is-cpu", sets, c.clip.empty() ? RunOptions{} : frames);
-      ctx.add_run(r, "cloth-cloth/" + c.scene + (c.sets.empty() ? "" : "/together") +
-                         (c.clip.empty() ? "" : "/" + c.clip) + "/" + m.label);
+      ctx.add_run(r, "cloth-cloth/" + c.label + "/" + (c.clip.empty() ? "standing" : c.clip) + "/" + m.label);
       t.row(cells(c, m, r));
       rows.push_back({&c, &m, cloth_through(r), !r.divergence && limit_misses(r).empty(), r.ms_per_iteration()});
     }
