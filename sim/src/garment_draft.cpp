@@ -32,8 +32,8 @@ constexpr double kCrotchDrop = 0.08;
 constexpr double kHemBelowKnee = 0.04;
 // a sleeve's length under the arm, from the cuff to the armpit [cm]: a short sleeve over the upper arm
 constexpr double kSleeveUnderCm = 10;
-// how far below the armpit the arm's axis is taken, between two sections this far apart [m]
-constexpr double kArmSectionBelow = 0.04, kArmSectionSpan = 0.12;
+// the arm's axis is taken between the section the upper arm's girth is measured at and one this far below it [m]
+constexpr double kArmSectionSpan = 0.12;
 // how far below the armpit a bodice's side seam ends [m]
 constexpr double kBelowArmpit = 0.03;
 // how far above the shoulder's top a bodice's shoulder seam is cut, as a fraction of the chest's depth at the
@@ -140,15 +140,16 @@ std::vector<std::pair<std::string, std::vector<Vec2d>>> bodice_top(double chest_
           {"armhole_l", armhole_l}};
 }
 
+// the index of the panel's edge named `name` (its edge count when it has none)
+int edge_named(const Panel& panel, const std::string& name) {
+  return static_cast<int>(std::find(panel.edge_names.begin(), panel.edge_names.end(), name) - panel.edge_names.begin());
+}
+
 // sews edge `ea` of panel a to edge `eb` of panel b, one against the other (the drafts' panels mirror each other),
 // where panel a has that edge
 void sew(Pattern& p, int a, const std::string& ea, int b, const std::string& eb) {
-  const auto edge = [&](int panel, const std::string& e) {
-    const auto& names = p.panels[static_cast<std::size_t>(panel)].edge_names;
-    return static_cast<int>(std::find(names.begin(), names.end(), e) - names.begin());
-  };
-  if (edge(a, ea) < p.panels[static_cast<std::size_t>(a)].edge_count())
-    p.seams.push_back({a, edge(a, ea), b, edge(b, eb), true});
+  const Panel &pa = p.panels[static_cast<std::size_t>(a)], &pb = p.panels[static_cast<std::size_t>(b)];
+  if (edge_named(pa, ea) < pa.edge_count()) p.seams.push_back({a, edge_named(pa, ea), b, edge_named(pb, eb), true});
 }
 
 Pattern sewn_front_and_back(const std::string& name, Panel front, Panel back) {
@@ -350,10 +351,7 @@ double cap_height(double half_width, double length) {
 void add_sleeves(Pattern& p, const BodyFrame& body, const BodyMeasurements& m, double ease_cm) {
   const double r = (100 * m["upper arm girth"].value_m + ease_cm) / (2 * M_PI), turn = 2 * M_PI * r;
   const double u0 = -2.5 * M_PI * r;  // the under edges face the armpit once the tube is tilted
-  const Panel& front = p.panels[0];
-  const double armhole =
-      edge_length_cm(front, static_cast<int>(std::find(front.edge_names.begin(), front.edge_names.end(), "armhole_r") -
-                                             front.edge_names.begin()));
+  const double armhole = edge_length_cm(p.panels[0], edge_named(p.panels[0], "armhole_r"));
   const double cap = cap_height(turn / 2, armhole), top = kSleeveUnderCm + cap;
   Panel left;
   left.name = "sleeve_l";
@@ -365,7 +363,7 @@ void add_sleeves(Pattern& p, const BodyFrame& body, const BodyMeasurements& m, d
   edge(left, "under_b", {});
   Panel right = mirrored(left, "sleeve_r");
   const Box3 box = bounding_box(body.positions);
-  const double armpit_h = m["armpit height"].height_m, h1 = armpit_h - kArmSectionBelow, h2 = h1 - kArmSectionSpan;
+  const double h1 = m["upper arm girth"].height_m, h2 = h1 - kArmSectionSpan;
   for (Panel* sleeve : {&left, &right}) {
     const int side = sleeve == &left ? 1 : -1;
     const Eigen::Vector2d a = arm_at(body, h1, side).centroid(), b = arm_at(body, h2, side).centroid();

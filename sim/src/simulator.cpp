@@ -334,9 +334,7 @@ void Simulator::hold_out_of_body() {
   if (!collider_) return;
   for (Eigen::Index i = 0; i < x_.cols(); ++i) {
     const Contact& c = contacts_[static_cast<std::size_t>(i)];
-    if (!c.hit || inv_m_[i] == 0) continue;
-    const Real into = (v_.col(i) - c.body_velocity).dot(c.normal);
-    if (into < 0) col(v_, i) -= into * c.normal;
+    if (c.hit && inv_m_[i] != 0) stop_into_body(col(v_, i), c);
   }
 }
 

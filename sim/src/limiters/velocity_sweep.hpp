@@ -312,8 +312,8 @@ void VelocitySweep<Derived>::stop_inward_contacts() {
   for (Eigen::Index i = 0; i < v.cols(); ++i) {
     const Contact& c = s_->contacts[static_cast<std::size_t>(i)];
     if (!c.hit || s_->inv_m[i] == 0) continue;
-    const Real vn = (v.col(i) - c.body_velocity).dot(c.normal);
-    if (vn < 0) v.col(i) -= vn * c.normal, mark_changed(static_cast<int>(i), -vn);
+    const Real stopped = stop_into_body(v.col(i), c);
+    if (stopped > 0) mark_changed(static_cast<int>(i), stopped);
   }
   // with face queries, a quad whose midpoint is in contact (contacts[nv + quad], dressing section 6) likewise: the
   // impulse that stops its midpoint's motion into the body, a quarter to each corner

@@ -20,6 +20,16 @@ struct Contact {
   Vec3 body_velocity = Vec3::Zero();  ///< body surface velocity there [m/s]; zero if static
 };
 
+/// Removes from velocity v its motion into the body at contact c, relative to the body's surface: the normal
+/// component heading in (sliding along the body and leaving it stay). Returns the normal speed removed [m/s], 0 when
+/// v was not heading in.
+inline Real stop_into_body(Eigen::Ref<Vec3> v, const Contact& c) {
+  const Real vn = (v - c.body_velocity).dot(c.normal);
+  if (!(vn < 0)) return 0;
+  v -= vn * c.normal;
+  return -vn;
+}
+
 /// Read-only view of packed query points (3 x count floats, column-major xyz) [m].
 struct PointsView {
   const Real* xyz = nullptr;
