@@ -44,6 +44,7 @@ void PhaseClock::finish(PhaseResult& r) const {
   r.cdr_ms = sim.timings().cdr_ms - start.cdr_ms;
   r.cs_ms = sim.timings().cs_ms - start.cs_ms;
   r.limit_ms = sim.timings().limit_ms - start.limit_ms;
+  r.cloth_ms = sim.timings().cloth_ms - start.cloth_ms;
   r.wall_ms = wall.ms();
   r.cpu_ms = thread_cpu_ms() - cpu_start;
 }

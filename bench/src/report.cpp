@@ -185,6 +185,7 @@ nlohmann::json run_fields(const RunResult& r, const std::string& name) {
           {"cdr_ms", r.cdr_ms_per_iteration()},
           {"cs_ms", r.cs_ms_per_iteration()},
           {"limit_ms", r.limit_ms_per_iteration()},
+          {"cloth_ms", r.cloth_ms_per_iteration()},
           {"scene", r.scene},
           {"collider", r.collider},
           {"integrator", r.integrator},

@@ -20,6 +20,7 @@ void phase_fields(J& j, R& p, F&& f) {
   f(j, "cdr_ms", p.cdr_ms);
   f(j, "cs_ms", p.cs_ms);
   f(j, "limit_ms", p.limit_ms);
+  f(j, "cloth_ms", p.cloth_ms);
   f(j, "reached", p.reached);
 }
 

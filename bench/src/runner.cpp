@@ -41,6 +41,7 @@ double RunResult::ms_per_iteration() const { return cdr_ms_per_iteration() + cs_
 double RunResult::cdr_ms_per_iteration() const { return per_iteration(&PhaseResult::cdr_ms); }
 double RunResult::cs_ms_per_iteration() const { return per_iteration(&PhaseResult::cs_ms); }
 double RunResult::limit_ms_per_iteration() const { return per_iteration(&PhaseResult::limit_ms); }
+double RunResult::cloth_ms_per_iteration() const { return per_iteration(&PhaseResult::cloth_ms); }
 double RunResult::cpu_ms_per_iteration() const { return per_iteration(&PhaseResult::cpu_ms); }
 
 double RunResult::frame_mean(double FrameSample::*field) const {
@@ -76,6 +77,8 @@ struct Rig {
   BodyFrame frame;                              // the body as the colliders see it (the collision proxy's, with one)
   BodyFrame exact_scratch;                      // the exact body of `frame`, with a collision proxy
   std::unique_ptr<Collider> collider, dresser;  // under test; collider.dress_with's (null without)
+  std::unique_ptr<Collider> under;              // collider.cloth_under's (null without)
+  std::optional<BodyBetweenFrames> under_skin;  // it as the simulator sees it: collider.cloth_skin_mm thicker
   std::optional<Simulator> sim;
   std::optional<BodyBetweenFrames> dressing;  // the dressing collider as the simulator sees it
 };
@@ -234,6 +237,7 @@ void set_up_simulator(const Scene& scene, ClothMesh cloth, Rig& rig, RunResult& 
 void add_phase(PhaseResult& run, const PhaseResult& layer) {
   run.iterations += layer.iterations, run.wall_ms += layer.wall_ms, run.cpu_ms += layer.cpu_ms;
   run.cdr_ms += layer.cdr_ms, run.cs_ms += layer.cs_ms, run.limit_ms += layer.limit_ms;
+  run.cloth_ms += layer.cloth_ms;
 }
 
 // the next layer of garments placed clear of the cloth dressed so far (by twice the cloth's thickness, at least
@@ -244,8 +248,17 @@ void wear_next_layer(const RunContext& run, Rig& rig, ClothMesh next, RunResult&
   worn.positions = run.sim.positions();
   clear_of_layer(worn.positions, worn.quads, next.positions,
                  std::max(kLayerClearance, 2 * run.scene.solver.self_contact), kLayerReach);
+  const Eigen::Index under = worn.positions.cols();
   worn.append(next);
   set_up_simulator(run.scene, std::move(worn), rig, r);
+  if (run.scene.cloth_under.empty()) return;
+  const Real tol = run.scene.collider_options.tol;
+  if (!rig.under) {
+    rig.under = make_collider(run.scene.cloth_under, run.scene.collider_options);
+    rig.under_skin.emplace(*rig.under, tol, Real(run.scene.cloth_skin_mm * 1e-3));
+  }
+  // drawn again once the cloth under has moved half the distance a point is answered within
+  rig.sim->set_layers_under(&*rig.under_skin, under, tol / 2);
 }
 
 // sew -> attach -> drape for each layer of garments (the next worn over the dressed ones, then all of them sewn and
@@ -292,17 +305,41 @@ void finish(const RunContext& run, BodyFrame& exact_scratch, const CollideStats&
   r.mesh.positions = sim.positions();
 }
 
+// collider.cloth_under: an image-space collider. The maps of a sheet of cloth say where a point is behind it as its
+// cameras see it; an object-space collider takes the side of the nearest triangle for inside, which past a
+// garment's hem or opening is not behind it
+void check_cloth_under(const Scene& scene, std::size_t layers) {
+  if (scene.cloth_under.empty()) return;
+  const auto info = collider_info(scene.cloth_under);
+  if (!info || info->family != Family::kImageSpace) {
+    std::string names;
+    for (const std::string& n : colliders([](const ColliderInfo& c) { return c.family == Family::kImageSpace; }))
+      names += (names.empty() ? "" : ", ") + n;
+    throw InputError(located(scene.path, 0,
+                             "collider.cloth_under = \"" + scene.cloth_under +
+                                 "\": not an image-space collider (" + names +
+                                 "); cloth against cloth in object space is solver.self_contact_mm"));
+  }
+  if (layers < 2)
+    std::fprintf(stderr,
+                 "clothbench: warning: %s: collider.cloth_under has nothing to answer: the garments are one layer "
+                 "([[garment]] layer)\n",
+                 scene.path.c_str());
+}
+
 RunResult run_unchecked(const Scene& scene, const RunOptions& options) {
   RunResult r = configuration(scene);
   // body, cloth, collider, simulator
   Rig rig(scene);
   std::vector<ClothMesh> layers = build_layers(scene, pose_body(rig, r));
+  check_cloth_under(scene, layers.size());
   set_up_colliders(scene, rig, r);
   for (const ClothMesh& layer : layers) warn_start_inside(scene, layer, rig.dressing_collider());
-  if (layers.size() > 1 && scene.solver.self_contact <= 0)
+  if (layers.size() > 1 && scene.solver.self_contact <= 0 && scene.cloth_under.empty())
     std::fprintf(stderr,
                  "clothbench: warning: %s: garments dressed in %zu layers without cloth against cloth "
-                 "(solver.self_contact_mm = 0): an outer layer may pass through the one under it\n",
+                 "(solver.self_contact_mm = 0, no collider.cloth_under): an outer layer may pass through the one "
+                 "under it\n",
                  scene.path.c_str(), layers.size());
   set_up_simulator(scene, std::move(layers[0]), rig, r);
   // up front: how long it may take

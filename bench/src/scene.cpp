@@ -229,6 +229,10 @@ template <class S, class V, std::enable_if_t<std::is_same_v<std::remove_const_t<
 void visit_fields(S& s, V& v) {
   v(Key{"name", "", "the collider (clothbench colliders)"}, s.collider, Text{});
   v(Key{"dress_with", "", "the collider of sewing, draping and the lead-in; empty: name"}, s.dress_with, Text{});
+  v(Key{"cloth_under", "", "image space: an outer layer against the cloth under it; empty: none", Hash::kWhenNonzero},
+    s.cloth_under, Text{});
+  v(Key{"cloth_skin_mm", "mm", "cloth_under: the cloth under answered this much thicker", Hash::kWhenNonzero},
+    s.cloth_skin_mm, Range{0, 1000});
   visit_fields(s.collider_options, v);
 }
 
@@ -376,6 +380,11 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
                              "body.skin_mm = " + std::to_string(s.body.skin_mm) + ": must be below collider.tol (" +
                                  std::to_string(1e3 * double(s.collider_options.tol)) +
                                  " mm), or the skin would push every contact out"));
+  if (!s.cloth_under.empty() && !(s.cloth_skin_mm * 1e-3 < double(s.collider_options.tol)))
+    throw InputError(located(file, 0,
+                             "collider.cloth_skin_mm = " + std::to_string(s.cloth_skin_mm) +
+                                 ": must be below collider.tol (" +
+                                 std::to_string(1e3 * double(s.collider_options.tol)) + " mm)"));
   read_section(section("stop"), s.stop);
   check_pose_fps(file, s.body);
   return s;

@@ -230,7 +230,10 @@ bool Simulator::step() {
   double cs_ms = cs.ms();
   cdr.restart();
   respond();
+  Stopwatch cloth;
   if (params_.self_contact > 0) self_.respond(mesh_, merged_groups_, x_, v_, inv_m_, params_.self_contact);
+  respond_to_layers();
+  double cloth_ms = cloth.ms();
   cdr_ms += cdr.ms();
   cs.restart();
   // the limit again, each pass followed by the contacts' non-penetration: the body stops the cloth's motion
@@ -238,6 +241,9 @@ bool Simulator::step() {
   limit.restart();
   if (params_.limit_after_response && collider_) limiter_->limit_velocities(state, true);
   limit_ms += limit.ms();
+  cloth.restart();
+  hold_out_of_layers();
+  cloth_ms += cloth.ms();
   // cloth against itself once more, last: the limit's second pass moves points along their springs and can carry
   // one through the cloth the first answer stopped it at; then the body's non-penetration again, which that answer
   // may have undone for a point between the body and the cloth
@@ -245,7 +251,9 @@ bool Simulator::step() {
     cdr.restart();
     self_.respond(mesh_, merged_groups_, x_, v_, inv_m_, params_.self_contact);
     hold_out_of_body();
-    cdr_ms += cdr.ms();
+    hold_out_of_layers();
+    const double ms = cdr.ms();
+    cdr_ms += ms, cloth_ms += ms;
   }
   integrate_positions();
   if (drifts) v_ -= drift_ / dt_;  // back to the end-of-step velocity, with what limits and response changed
@@ -257,6 +265,7 @@ bool Simulator::step() {
   timings_.cdr_ms += cdr_ms;
   timings_.cs_ms += cs_ms;
   timings_.limit_ms += limit_ms;
+  timings_.cloth_ms += cloth_ms;
   timings_.limit_passes = limiter_->passes();
   ++timings_.iterations;
   ++iteration_;
@@ -338,45 +347,66 @@ void Simulator::hold_out_of_body() {
   }
 }
 
+void Simulator::respond_at(Eigen::Index i, const Contact& c) {
+  if (!c.hit || inv_m_[i] == 0) return;
+  col(v_, i) = collision_response(v_.col(i), c, material_.friction, material_.reflection);
+  // Durupinar Eq. 3: a point that has passed beneath the surface is brought back to it along the normal, no
+  // faster than push_speed (a body that swallowed the cloth between frames lets it out over a few steps,
+  // not with a jump its springs would turn into a speed)
+  if (params_.push_out && c.depth < 0) col(x_, i) += std::min(-c.depth, params_.push_speed * dt_) * c.normal;
+}
+
+void Simulator::set_layers_under(Collider* collider, Eigen::Index under, Real redraw) {
+  layers_.reset();
+  if (collider) layers_.emplace(*collider, mesh_, under, redraw, params_.face_queries);
+}
+
+void Simulator::respond_to_layers() {
+  if (!layers_) return;
+  layers_->detect(x_, v_);
+  const auto& contacts = layers_->contacts();
+  const auto above = static_cast<std::size_t>(x_.cols() - layers_->under());
+  for (std::size_t k = 0; k < above; ++k) respond_at(layers_->under() + Eigen::Index(k), contacts[k]);
+  if (params_.face_queries) respond_faces(layers_->first_quad(), contacts.data() + above);
+}
+
+void Simulator::hold_out_of_layers() {
+  if (!layers_) return;
+  const auto& contacts = layers_->contacts();
+  for (std::size_t k = 0; k < static_cast<std::size_t>(x_.cols() - layers_->under()); ++k) {
+    const Eigen::Index i = layers_->under() + Eigen::Index(k);
+    if (contacts[k].hit && inv_m_[i] != 0) stop_into_body(col(v_, i), contacts[k]);
+  }
+}
+
 void Simulator::respond() {
   if (!collider_) return;
   const Eigen::Index nv = x_.cols();
-  auto resolve = [&](const Vec3& v, const Contact& c) {
-    return collision_response(v, c, material_.friction, material_.reflection);
-  };
   // vertex contacts first
-  std::vector<Vec3> face_sum;
-  std::vector<int> face_count;
-  for (Eigen::Index i = 0; i < nv; ++i) {
-    const Contact& c = contacts_[static_cast<std::size_t>(i)];
-    if (!c.hit || inv_m_[i] == 0) continue;
-    col(v_, i) = resolve(v_.col(i), c);
-    // Durupinar Eq. 3: a point that has passed beneath the surface is brought back to it along the normal, no
-    // faster than push_speed (a body that swallowed the cloth between frames lets it out over a few steps,
-    // not with a jump its springs would turn into a speed)
-    if (params_.push_out && c.depth < 0) col(x_, i) += std::min(-c.depth, params_.push_speed * dt_) * c.normal;
-  }
-  if (!params_.face_queries) return;
+  for (Eigen::Index i = 0; i < nv; ++i) respond_at(i, contacts_[static_cast<std::size_t>(i)]);
+  if (params_.face_queries) respond_faces(0, contacts_.data() + nv);
+}
+
+void Simulator::respond_faces(Eigen::Index first_quad, const Contact* contacts) {
   // face-body: the quad midpoint's response goes to its four vertices, averaged (dressing section 6),
   // as the change it makes to the midpoint's velocity: the vertices keep their motion relative to
   // each other (a seam closing across a quad is not stopped by it)
-  face_sum.assign(static_cast<std::size_t>(nv), Vec3::Zero());
-  face_count.assign(static_cast<std::size_t>(nv), 0);
-  for (Eigen::Index q = 0; q < mesh_.quads.cols(); ++q) {
-    const Contact& c = contacts_[static_cast<std::size_t>(nv + q)];
+  const auto nv = static_cast<std::size_t>(x_.cols());
+  std::vector<Vec3> face_sum(nv, Vec3::Zero());
+  std::vector<int> face_count(nv, 0);
+  for (Eigen::Index q = first_quad; q < mesh_.quads.cols(); ++q) {
+    const Contact& c = contacts[q - first_quad];
     if (!c.hit) continue;
     Vec3 vq = Vec3::Zero();
     for (int k = 0; k < 4; ++k) vq += 0.25f * v_.col(mesh_.quads(k, q));
-    const Vec3 dv = resolve(vq, c) - vq;
+    const Vec3 dv = collision_response(vq, c, material_.friction, material_.reflection) - vq;
     for (int k = 0; k < 4; ++k) {
       face_sum[static_cast<std::size_t>(mesh_.quads(k, q))] += dv;
       ++face_count[static_cast<std::size_t>(mesh_.quads(k, q))];
     }
   }
-  for (Eigen::Index i = 0; i < nv; ++i) {
-    const auto n = face_count[static_cast<std::size_t>(i)];
-    if (n && inv_m_[i] > 0) col(v_, i) += face_sum[static_cast<std::size_t>(i)] / Real(n);
-  }
+  for (std::size_t i = 0; i < nv; ++i)
+    if (face_count[i] && inv_m_[Eigen::Index(i)] > 0) col(v_, Eigen::Index(i)) += face_sum[i] / Real(face_count[i]);
 }
 
 void Simulator::integrate_positions() {

@@ -195,6 +195,28 @@ TEST(Runner, AnOutfitIsDressedInnerFirstWithTheClothKeptOutOfItself) {
   EXPECT_THROW(load_scene(scene, {"garment.layer=-1"}), InputError);
 }
 
+// collider.cloth_under: the dress answered against the maps of the shirt under it (the CPU rasteriser's, six views)
+// keeps its springs out of the shirt as the cloth against itself in object space does, within every body limit;
+// without any, more than 5 % cross. An object-space collider there, a skin as thick as the hit distance, are bad
+// input; only the keys set are hashed
+TEST(Runner, AnOuterLayerIsKeptOutOfTheMapsOfTheClothUnderIt) {
+  if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const std::vector<std::string> none{"solver.self_contact_mm=0", "solver.self_contact_last=false"};
+  std::vector<std::string> image = none;
+  image.insert(image.end(), {"collider.cloth_under=is-cpu", "collider.cloth_skin_mm=3", "collider.views=6"});
+  const RunResult r = outfit(image);
+  ASSERT_FALSE(r.divergence);
+  EXPECT_TRUE(limit_misses(r).empty()) << limits_cell(r);
+  EXPECT_LE(r.accuracy.cloth_crossings_pct, 1.0);
+  EXPECT_GT(r.cloth_ms_per_iteration(), 0);
+  EXPECT_GT(outfit(none).accuracy.cloth_crossings_pct, 5.0);
+  const std::string scene = std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/dressing/outfit.toml";
+  EXPECT_THROW(load_scene(scene, {"collider.cloth_under=is-cpu", "collider.cloth_skin_mm=5"}), InputError);
+  EXPECT_THROW(outfit({"collider.cloth_under=embree"}), InputError);
+  EXPECT_EQ(config_text(load_scene(scene)).find("cloth_"), std::string::npos);
+  EXPECT_NE(config_text(load_scene(scene, image)).find("collider.cloth_under = \"is-cpu\""), std::string::npos);
+}
+
 // body.scale: a body the project has not seen, the walking body 1.15 times as broad and deep, gets a fitted shirt (at
 // the scene's 400 vertices, with face queries: without, 1.5 % of its springs cross the bust and shoulder blades)
 // that sews and meets every limit; its final body is the scaled one; a scale outside [0.2, 5], or of a sphere, is

@@ -1,10 +1,12 @@
 // Layers of garments: an outer garment's points inside or too near the dressed cloth under it are moved out along
-// its normal to the clearance; points clear of it, or beyond the reach, stay where they are.
+// its normal to the clearance; points clear of it, or beyond the reach, stay where they are. The cloth under is a
+// moving body for the layer over it, facing out, given to its collider again once it has moved.
 #include "clothbench/sim/layers.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace clothbench {
 namespace {
@@ -50,6 +52,69 @@ TEST(Layers, PointsInsideOrNearTheClothUnderThemMoveOutToTheClearance) {
     EXPECT_EQ(outer.col(2), before.col(2));
     EXPECT_EQ(outer.col(3), before.col(3));
   }
+}
+
+// a collider that keeps the bodies it is given and answers no point hit
+class Recorder final : public Collider {
+ public:
+  std::string_view name() const override { return "recorder"; }
+  void set_body(const BodyFrame& body) override { bodies.push_back(body), ++sets; }
+  void update_body(const BodyFrame& body) override { bodies.push_back(body); }
+  void query(PointsView points, ContactsOut out) override {
+    queried += points.count;
+    for (std::size_t i = 0; i < out.count; ++i) out[i] = Contact{};
+  }
+  CollideStats stats() const override { return {}; }
+  std::vector<BodyFrame> bodies;
+  std::size_t queried = 0;
+  int sets = 0;
+};
+
+TEST(Layers, TheClothUnderIsABodyFacingOutGivenAgainOnceItHasMoved) {
+  for (const bool inward : {false, true}) {  // the cells' winding does not decide which side is out
+    SCOPED_TRACE(inward);
+    const Cylinder inner(0.15f, 32, 6, inward), outer(0.17f, 32, 6);
+    const Eigen::Index under = inner.x.cols();
+    ClothMesh mesh;
+    mesh.positions.resize(3, 2 * under);
+    mesh.positions << inner.x, outer.x;
+    mesh.quads.resize(4, 2 * inner.cells.cols());
+    mesh.quads << inner.cells, (outer.cells.array() + std::int32_t(under)).matrix();
+    Recorder recorder;
+    LayersUnder layers(recorder, mesh, under, 0.002f, true);
+    Points3 x = mesh.positions, v = Points3::Zero(3, 2 * under);
+    layers.detect(x, v);
+    ASSERT_EQ(recorder.bodies.size(), 1u);
+    const BodyFrame& body = recorder.bodies[0];
+    EXPECT_EQ(body.vertex_count(), under);
+    EXPECT_EQ(body.triangle_count(), 2 * inner.cells.cols());
+    EXPECT_TRUE(body.moving);
+    for (Eigen::Index i = 0; i < under; ++i) EXPECT_GT(body.normals.col(i).dot(Vec3(x(0, i), 0, x(2, i))), 0) << i;
+    // the points over it, then the midpoints of their quads
+    EXPECT_EQ(layers.first_quad(), inner.cells.cols());
+    EXPECT_EQ(layers.contacts().size(), std::size_t(under + outer.cells.cols()));
+    EXPECT_EQ(recorder.queried, layers.contacts().size());
+    // moved less than the redraw distance: the body stays as it was given
+    x.leftCols(under).row(0).array() += 0.001f;
+    layers.detect(x, v);
+    EXPECT_EQ(recorder.bodies.size(), 1u);
+    // one point more: given again, where the cloth is, with its velocities
+    x(0, 5) += 0.0015f;
+    v.col(5) = Vec3(1, 0, 0);
+    layers.detect(x, v);
+    ASSERT_EQ(recorder.bodies.size(), 2u);
+    EXPECT_EQ(recorder.sets, 1);
+    EXPECT_EQ(recorder.bodies[1].positions, x.leftCols(under));
+    EXPECT_EQ(recorder.bodies[1].velocities(0, 5), 1.0f);
+    EXPECT_EQ(layers.draws(), 2);
+  }
+  const Cylinder one(0.15f, 8, 3);
+  ClothMesh mesh;
+  mesh.positions = one.x;
+  mesh.quads = one.cells;
+  Recorder recorder;
+  EXPECT_THROW(LayersUnder(recorder, mesh, 0, 0.002f, false), std::invalid_argument);
+  EXPECT_THROW(LayersUnder(recorder, mesh, one.x.cols(), 0.002f, false), std::invalid_argument);
 }
 
 }  // namespace

@@ -27,6 +27,7 @@ struct PhaseResult {
   double cdr_ms = 0;     ///< collision detection and response
   double cs_ms = 0;      ///< cloth simulation
   double limit_ms = 0;   ///< of cs_ms: the velocity limits
+  double cloth_ms = 0;   ///< of cdr_ms: cloth against cloth (solver.self_contact_mm, collider.layers)
   bool reached = false;  ///< sew: sewn; drape: settled; animate: clip finished
 };
 
@@ -98,6 +99,7 @@ struct RunResult {
   double cdr_ms_per_iteration() const;
   double cs_ms_per_iteration() const;
   double limit_ms_per_iteration() const;  ///< of cs: the velocity limits' passes
+  double cloth_ms_per_iteration() const;  ///< of cdr: cloth against cloth
   /// CPU time of the running thread per iteration over the phases (collider worker threads not counted).
   double cpu_ms_per_iteration() const;
   /// Mean and largest value over frame_samples of a field (0 without samples): the worst frame's inside,

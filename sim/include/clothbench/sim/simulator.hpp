@@ -11,6 +11,7 @@
 #include "clothbench/sim/cloth.hpp"
 #include "clothbench/sim/collider.hpp"
 #include "clothbench/sim/integrator.hpp"
+#include "clothbench/sim/layers.hpp"
 #include "clothbench/sim/limiter.hpp"
 #include "clothbench/sim/self_contact.hpp"
 
@@ -132,6 +133,7 @@ struct SimTimings {
   double cdr_ms = 0;  ///< collision detection (collider query) and response
   double cs_ms = 0;   ///< cloth simulation: forces (the reaction force of Eq. 16 included), integration, limits, seaming
   double limit_ms = 0;  ///< of cs_ms: the strain limiter (super-elasticity: dressing 4, walking 3)
+  double cloth_ms = 0;  ///< of cdr_ms: cloth against cloth (itself, and the layers under it: drawn and queried)
   long limit_passes = 0;  ///< the limiter's passes over the springs (a sweep stops early once a pass changes nothing)
   long iterations = 0;
 };
@@ -150,6 +152,14 @@ class Simulator {
 
   /// The collider to query each iteration (may be null: no collisions). Not owned.
   void set_collider(Collider* collider) { collider_ = collider; }
+  /// Cloth against the dressed layers under it: the vertices from `under` on (and their quads' midpoints with
+  /// face_queries) are answered as against the body (dressing Eq. 12, push_out, and held out again after the
+  /// limit's second pass) against the cloth before
+  /// `under`, given to `collider` as a moving body again once a point of it has moved `redraw` [m] (LayersUnder).
+  /// Not owned; null: none.
+  void set_layers_under(Collider* collider, Eigen::Index under, Real redraw);
+  /// The layers under's draws so far (0 without).
+  long layer_draws() const { return layers_ ? layers_->draws() : 0; }
   /// Sets the phase: kSew turns gravity off (and Durupinar's attraction on); kDrape/kAnimate turn
   /// gravity on. Elastic seams pull in every phase until their pairs merge.
   void set_phase(Phase phase) { phase_ = phase; }
@@ -220,6 +230,11 @@ class Simulator {
   void cap_seam_speeds();
   void attract_seams();
   void respond();
+  void respond_at(Eigen::Index i, const Contact& c);  // one vertex's response to a contact
+  // the responses of the midpoints of the quads from first_quad on (their contacts in order) to their vertices
+  void respond_faces(Eigen::Index first_quad, const Contact* contacts);
+  void respond_to_layers();
+  void hold_out_of_layers();  // as hold_out_of_body, against the layers under
   void hold_out_of_body();  // no vertex in contact keeps a velocity into the body (relative to it)
   void integrate_positions();
   void merge_seams();
@@ -250,6 +265,7 @@ class Simulator {
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
   SelfContacts self_;                            // cloth against itself (SolverParams::self_contact)
+  std::optional<LayersUnder> layers_;            // cloth against the layers under it (set_layers_under)
   Box3 start_box_;
   Collider* collider_ = nullptr;
   Phase phase_ = Phase::kDrape;
