@@ -1,7 +1,10 @@
 // clothbench reproduce [--only ID,...] [--out DIR] [--quick] [--repetitions N]
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -75,9 +78,42 @@ std::string opengl_devices() {
          (gpu ? ":" : ", **no GPU**: the OpenGL timings are Mesa's CPU rasteriser (llvmpipe):") + "\n\n" + list + "\n";
 }
 
-// results/README.md: the index of every experiment and the machine
-void write_index(ExperimentContext& ctx, const std::string& out, const std::vector<std::pair<std::string, double>>& done,
-                 bool quick) {
+// the wall times [s] the index `readme` lists, by experiment ID (its rows: ID, what, [ID.md](ID.md), ..., time)
+std::map<std::string, std::string> listed_wall_times(const std::string& readme) {
+  std::map<std::string, std::string> times;
+  std::ifstream in(readme);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, '|');) cells.push_back(cell);
+    // "| id | what | table | ... | time |" splits into an empty first cell and the table's
+    if (cells.size() < 6 || line.rfind("| ", 0) != 0) continue;
+    const auto trim = [](std::string v) {
+      v.erase(0, v.find_first_not_of(' '));
+      return v.erase(v.find_last_not_of(' ') + 1);
+    };
+    const std::string id = trim(cells[1]);
+    if (trim(cells[3]) == "[" + id + ".md](" + id + ".md)") times[id] = trim(cells.back());
+  }
+  return times;
+}
+
+// the git SHA a page's data was written at (its JSON's context), "?" when unreadable
+std::string page_git_sha(const std::string& json_path) {
+  try {
+    std::ifstream in(json_path);
+    return nlohmann::json::parse(in).at("context").at("git_sha").get<std::string>();
+  } catch (const std::exception&) {
+    return "?";
+  }
+}
+
+// results/README.md: the index of every experiment page in `out` (those not run now keep the wall time the index
+// listed them with), the git SHA each was written at, and the machine
+void write_index(ExperimentContext& ctx, const std::string& out,
+                 const std::vector<std::pair<std::string, double>>& done, bool quick) {
+  std::map<std::string, std::string> seconds = listed_wall_times(out + "/README.md");
+  for (const auto& [id, s] : done) seconds[id] = num(s, 1);
   const nlohmann::json c = machine_context();
   std::ostringstream md;
   md << "# clothbench results\n\nWritten by `clothbench reproduce" << (quick ? " --quick" : "")
@@ -86,14 +122,16 @@ void write_index(ExperimentContext& ctx, const std::string& out, const std::vect
      << "Machine: " << c["cpu_model"].get<std::string>() << ", " << c["num_cpus"] << " cores, host "
      << c["host_name"].get<std::string>() << "; compiler " << c["compiler"].get<std::string>() << ", "
      << c["build_type"].get<std::string>() << ", flags `" << c["cxx_flags"].get<std::string>() << "`; git "
-     << c["git_sha"].get<std::string>() << "; " << c["date"].get<std::string>() << ".\n\n"
+     << c["git_sha"].get<std::string>() << "; " << c["date"].get<std::string>() << " (the last `reproduce`: "
+     << (done.size() == experiments().size() ? "every page" : std::to_string(done.size()) + " of the pages")
+     << "; each page says its own).\n\n"
      << opengl_devices();
-  MarkdownTable t({"ID", "what", "table", "data", "wall time [s]"});
-  for (const auto& [id, seconds] : done) {
-    std::string title;
-    for (const auto& e : experiments())
-      if (e.id == id) title = e.title;
-    t.row({id, title, "[" + id + ".md](" + id + ".md)", "[" + id + ".json](" + id + ".json)", num(seconds, 1)});
+  MarkdownTable t({"ID", "what", "table", "data", "git", "wall time [s]"});
+  for (const auto& e : experiments()) {
+    if (!std::filesystem::exists(out + "/" + e.id + ".md")) continue;
+    const auto listed = seconds.find(e.id);
+    t.row({e.id, e.title, "[" + e.id + ".md](" + e.id + ".md)", "[" + e.id + ".json](" + e.id + ".json)",
+           page_git_sha(out + "/" + e.id + ".json"), listed == seconds.end() ? "-" : listed->second});
   }
   md << t.str() << "\nCharts are `ID.png`; pictures of dressed bodies are under `pictures/`; maps under `maps/`; "
      << "garment meshes under `garments/`.\n\n"
@@ -137,7 +175,7 @@ int reproduce(const ReproduceArgs& a) {
     done.emplace_back(e.id, clock.ms() / 1e3);
     std::cerr << "[" << e.id << "] done in " << num(clock.ms() / 1e3, 1) << " s\n";
   }
-  if (wanted.empty()) write_index(ctx, a.out, done, a.quick);
+  write_index(ctx, a.out, done, a.quick);
   // results/index.html from whatever the folder now holds (screenshots of it on full runs)
   write_html_report(a.out, wanted.empty());
   return 0;

@@ -279,6 +279,22 @@ TEST_F(Cli, ReproduceHelpListsEveryExperimentOfTheRegistry) {
   }
 }
 
+// reproduce --only rewrites the index from the pages the folder holds: the page it ran with its wall time and git SHA,
+// another page with the wall time the index listed it with (its SHA unknown without its JSON)
+TEST_F(Cli, ReproduceOnlyKeepsTheIndexOfEveryPageInTheFolder) {
+  const std::string log = (dir_ / "log").string(), out = (dir_ / "results").string();
+  fs::create_directories(out);
+  std::ofstream(out + "/dressing-t1.md") << "# dressing-t1\n";
+  std::ofstream(out + "/README.md")
+      << "| dressing-t1 | x | [dressing-t1.md](dressing-t1.md) | [dressing-t1.json](dressing-t1.json) | 12.5 |\n";
+  ASSERT_EQ(clothbench("reproduce --quick --only pictures --out " + out, log), 0) << read(log);
+  const std::string index = read(out + "/README.md");
+  const std::string ran = line_starting(index, "| pictures |"), kept = line_starting(index, "| dressing-t1 |");
+  EXPECT_NE(ran.find("| " + clothbench::git_sha() + " |"), std::string::npos) << index;
+  EXPECT_NE(kept.find("| ? | 12.5 |"), std::string::npos) << index;
+  EXPECT_LT(index.find("| dressing-t1 |"), index.find("| pictures |"));  // in the registry's order
+}
+
 // the placement preview: the garment placed on a body as a run places it, measured against the exact body and drawn
 TEST_F(Cli, GarmentOnABodyReportsHowItStartsAndDrawsIt) {
   const std::string log = (dir_ / "log").string(), png = (dir_ / "placed.png").string();
