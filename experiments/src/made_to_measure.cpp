@@ -101,6 +101,12 @@ struct Row {
 // the row's vertex count: the type's, or a few at quick sizes
 int vertices(const ExperimentContext& ctx, const Type& type) { return ctx.quick() ? 150 : type.vertices; }
 
+// the sizes drafted: every one, or M and the largest at quick sizes (the same code paths at half the runs)
+std::vector<std::string> sizes(const ExperimentContext& ctx) {
+  const std::vector<std::string> all = draft_sizes();
+  return ctx.quick() ? std::vector<std::string>{"M", all.back()} : all;
+}
+
 std::vector<std::string> overrides(const ExperimentContext& ctx, const Body& b, const Type& type, bool on_grid,
                                    const std::string& size) {
   std::vector<std::string> sets{"body.file=" + std::string(b.file),
@@ -196,7 +202,7 @@ Tally tally(const std::vector<Row>& rows, bool on_grid) {
       t.springs += r->slivers.total();
       t.spacing_lo = std::min(t.spacing_lo, r->spacing_cm), t.spacing_hi = std::max(t.spacing_hi, r->spacing_cm);
     }
-    bool up = gap.size() == draft_sizes().size();
+    bool up = gap.size() == sizes.size();  // every size drafted dressed
     std::string series;
     for (std::size_t k = 0; k < gap.size(); ++k) {
       up = up && (k == 0 || gap[k] > gap[k - 1]);
@@ -282,7 +288,7 @@ void made_to_measure(ExperimentContext& ctx) {
     for (const Type& type : kTypes)
       for (const bool on_grid : {false, true}) {
         std::vector<double> x, y;
-        for (const std::string& size : draft_sizes()) {
+        for (const std::string& size : sizes(ctx)) {
           const RunResult& r = ctx.run("dressing/" + std::string(type.scene) + ".toml", "is-cpu",
                                        overrides(ctx, b, type, on_grid, size));
           ctx.add_run(r,
