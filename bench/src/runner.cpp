@@ -316,9 +316,9 @@ void check_cloth_under(const Scene& scene, std::size_t layers) {
     for (const std::string& n : colliders([](const ColliderInfo& c) { return c.family == Family::kImageSpace; }))
       names += (names.empty() ? "" : ", ") + n;
     throw InputError(located(scene.path, 0,
-                             "collider.cloth_under = \"" + scene.cloth_under +
-                                 "\": not an image-space collider (" + names +
-                                 "); cloth against cloth in object space is solver.self_contact_mm"));
+                             "collider.cloth_under = \"" + scene.cloth_under + "\": " +
+                                 (info ? "not an image-space collider" : "unknown collider") + " (image space: " +
+                                 names + "; cloth against cloth in object space is solver.self_contact_mm)"));
   }
   if (layers < 2)
     std::fprintf(stderr,
