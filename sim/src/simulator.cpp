@@ -231,9 +231,10 @@ bool Simulator::step() {
   cdr.restart();
   respond();
   Stopwatch cloth;
+  const bool cloth_on = params_.self_contact > 0 || layers_;  // cloth against cloth timed only where it is on
   if (params_.self_contact > 0) self_.respond(mesh_, merged_groups_, x_, v_, inv_m_, params_.self_contact);
   respond_to_layers();
-  double cloth_ms = cloth.ms();
+  double cloth_ms = cloth_on ? cloth.ms() : 0;
   cdr_ms += cdr.ms();
   cs.restart();
   // the limit again, each pass followed by the contacts' non-penetration: the body stops the cloth's motion
@@ -241,9 +242,11 @@ bool Simulator::step() {
   limit.restart();
   if (params_.limit_after_response && collider_) limiter_->limit_velocities(state, true);
   limit_ms += limit.ms();
-  cloth.restart();
-  hold_out_of_layers();
-  cloth_ms += cloth.ms();
+  if (layers_) {
+    cloth.restart();
+    hold_out_of_layers();
+    cloth_ms += cloth.ms();
+  }
   // cloth against itself once more, last: the limit's second pass moves points along their springs and can carry
   // one through the cloth the first answer stopped it at; then the body's non-penetration again, which that answer
   // may have undone for a point between the body and the cloth

@@ -4,7 +4,7 @@ no failed points. usage: same_except_timings.py A.json B.json"""
 import json
 import sys
 
-TIMINGS = {"real_time", "cpu_time", "time_unit", "total_s", "setup_ms", "cdr_ms", "cs_ms", "limit_ms",
+TIMINGS = {"real_time", "cpu_time", "time_unit", "total_s", "setup_ms", "cdr_ms", "cs_ms", "limit_ms", "cloth_ms",
            "oracle_depth_ms", "oracle_crossings_ms", "fps", "skinning_ms_per_frame", "collider_update_ms_per_frame"}
 
 
