@@ -33,6 +33,14 @@ void check_pose_fps(const std::string& file, const BodySpec& b) {
   throw InputError(located(file, 0, msg.str()));
 }
 
+// a skin `key` of `mm` (BodyBetweenFrames: contacts answered that much closer) below the hit distance `tol` [m]
+void check_skin(const std::string& file, const std::string& key, double mm, Real tol) {
+  if (mm * 1e-3 < double(tol)) return;
+  throw InputError(located(file, 0,
+                           key + " = " + std::to_string(mm) + ": must be below collider.tol (" +
+                               std::to_string(1e3 * double(tol)) + " mm), or the skin would push every contact out"));
+}
+
 // Levenshtein distance: single-character insertions, deletions and substitutions
 std::size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<std::size_t> row(b.size() + 1);
@@ -375,16 +383,8 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
   read_section(section("material"), s.material);
   read_section(section("solver"), s.solver);
   read_section(section("collider"), s);
-  if (s.body.skin_mm > 0 && !(s.body.skin_mm * 1e-3 < double(s.collider_options.tol)))
-    throw InputError(located(file, 0,
-                             "body.skin_mm = " + std::to_string(s.body.skin_mm) + ": must be below collider.tol (" +
-                                 std::to_string(1e3 * double(s.collider_options.tol)) +
-                                 " mm), or the skin would push every contact out"));
-  if (!s.cloth_under.empty() && !(s.cloth_skin_mm * 1e-3 < double(s.collider_options.tol)))
-    throw InputError(located(file, 0,
-                             "collider.cloth_skin_mm = " + std::to_string(s.cloth_skin_mm) +
-                                 ": must be below collider.tol (" +
-                                 std::to_string(1e3 * double(s.collider_options.tol)) + " mm)"));
+  if (s.body.skin_mm > 0) check_skin(file, "body.skin_mm", s.body.skin_mm, s.collider_options.tol);
+  if (!s.cloth_under.empty()) check_skin(file, "collider.cloth_skin_mm", s.cloth_skin_mm, s.collider_options.tol);
   read_section(section("stop"), s.stop);
   check_pose_fps(file, s.body);
   return s;

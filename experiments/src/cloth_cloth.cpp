@@ -161,36 +161,30 @@ std::vector<std::string> summary(const std::vector<Row>& rows, const std::vector
   return out;
 }
 
-const std::string kDescription =
-    std::string(
-        "Cloth against cloth: a garment's springs through its own triangles (a fold, a sleeve against the torso) or "
-        "through another garment's. The figure is the oracle's (cloth_crossings.hpp): structural springs through a "
-        "triangle of the cloth with no corner at either end, sewn points counted as one, at the end of a standing run "
-        "and "
-        "at the worst of every frame of a walk. The methods (scenes/README.md, `solver.self_contact_mm`, "
-        "`self_contact_last`): none; a point nearer than the thickness to a triangle of the cloth and moving towards "
-        "it "
-        "stopped by an impulse shared with the triangle's corners (Bridson, Fedkiw and Anderson 2002, section 7.1; the "
-        "candidates from a spatial hash of the triangles, Teschner et al. 2003), once a step after the body's "
-        "response; "
-        "and the same again after the strain limit's second pass, which moves points along their springs and can carry "
-        "one through the cloth, followed by the body's non-penetration. Image space (`collider.cloth_under`, "
-        "`cloth_skin_mm`; rows of the outfits dressed in layers only): the dressing paper's future work, the cloth "
-        "rendered and its collisions read from the maps. The dressed layer under is given to an image-space collider "
-        "as a "
-        "moving body (its cells as triangles facing away from its middle, its velocities as the body's), drawn again "
-        "once "
-        "a point of it has moved half the hit distance (`collider.tol`), answered ") +
-    kClothSkinMm +
-    " mm thicker; the "
-    "outer layer's points and quad midpoints are answered against it as against the body (dressing Eq. 12, pushed "
-    "out, held out after the limit's second pass). One way: the layer under is not answered against the one over it, "
-    "nor a garment against itself. With the papers' two cameras a point that neither sees behind the cloth under "
-    "(the armpit, a shoulder's top) is not answered, or answered along a side's normal; the six-view rows answer the "
-    "body with the same six cameras. The outfit (scenes/dressing/outfit.toml, "
-    "scenes/walking/outfit.toml) is a sleeveless dress drafted in size XL over a shirt with sleeves in size M, "
-    "dressed inner first (`[[garment]] layer`: the dress placed clear of the dressed shirt) or, in one row, both "
-    "together. The dress with sleeves is walking-t2's (2,300 vertices). One run each, one thread, is-cpu.\n\n";
+// the page's description, around the skin of the image-space rows
+const char* const kDescriptionHead =
+    "Cloth against cloth: a garment's springs through its own triangles (a fold, a sleeve against the torso) or "
+    "through another garment's. The figure is the oracle's (cloth_crossings.hpp): structural springs through a "
+    "triangle of the cloth with no corner at either end, sewn points counted as one, at the end of a standing run and "
+    "at the worst of every frame of a walk. The methods (scenes/README.md, `solver.self_contact_mm`, "
+    "`self_contact_last`): none; a point nearer than the thickness to a triangle of the cloth and moving towards it "
+    "stopped by an impulse shared with the triangle's corners (Bridson, Fedkiw and Anderson 2002, section 7.1; the "
+    "candidates from a spatial hash of the triangles, Teschner et al. 2003), once a step after the body's response; "
+    "and the same again after the strain limit's second pass, which moves points along their springs and can carry one "
+    "through the cloth, followed by the body's non-penetration. Image space (`collider.cloth_under`, `cloth_skin_mm`; "
+    "rows of the outfits dressed in layers only): the dressing paper's future work, the cloth rendered and its "
+    "collisions read from the maps. The dressed layer under is given to an image-space collider as a moving body (its "
+    "cells as triangles facing away from its middle, its velocities as the body's), drawn again once a point of it has "
+    "moved half the hit distance (`collider.tol`), answered ";
+const char* const kDescriptionTail =
+    " mm thicker; the outer layer's points and quad midpoints are answered against it as against the body (dressing "
+    "Eq. 12, pushed out, held out after the limit's second pass). One way: the layer under is not answered against the "
+    "one over it, nor a garment against itself. With the papers' two cameras a point that neither sees behind the "
+    "cloth under (the armpit, a shoulder's top) is not answered, or answered along a side's normal; the six-view rows "
+    "answer the body with the same six cameras. The outfit (scenes/dressing/outfit.toml, scenes/walking/outfit.toml) "
+    "is a sleeveless dress drafted in size XL over a shirt with sleeves in size M, dressed inner first (`[[garment]] "
+    "layer`: the dress placed clear of the dressed shirt) or, in one row, both together. The dress with sleeves is "
+    "walking-t2's (2,300 vertices). One run each, one thread, is-cpu.\n\n";
 
 void cloth_cloth(ExperimentContext& ctx) {
   MarkdownTable t = table();
@@ -211,7 +205,8 @@ void cloth_cloth(ExperimentContext& ctx) {
       t.row(cells(c, m, r));
       rows.push_back({&c, &m, cloth_through(r), !r.divergence && limit_misses(r).empty(), r.ms_per_iteration()});
     }
-  ctx.write("cloth-cloth", "Cloth against cloth", kDescription + t.str(), summary(rows, all_cases, all_methods));
+  ctx.write("cloth-cloth", "Cloth against cloth", kDescriptionHead + kClothSkinMm + kDescriptionTail + t.str(),
+            summary(rows, all_cases, all_methods));
 }
 
 }  // namespace

@@ -102,7 +102,7 @@ struct Row {
 int vertices(const ExperimentContext& ctx, const Type& type) { return ctx.quick() ? 150 : type.vertices; }
 
 // the sizes drafted: every one, or M and the largest at quick sizes (the same code paths at half the runs)
-std::vector<std::string> sizes(const ExperimentContext& ctx) {
+std::vector<std::string> drafted_sizes(const ExperimentContext& ctx) {
   const std::vector<std::string> all = draft_sizes();
   return ctx.quick() ? std::vector<std::string>{"M", all.back()} : all;
 }
@@ -288,7 +288,7 @@ void made_to_measure(ExperimentContext& ctx) {
     for (const Type& type : kTypes)
       for (const bool on_grid : {false, true}) {
         std::vector<double> x, y;
-        for (const std::string& size : sizes(ctx)) {
+        for (const std::string& size : drafted_sizes(ctx)) {
           const RunResult& r = ctx.run("dressing/" + std::string(type.scene) + ".toml", "is-cpu",
                                        overrides(ctx, b, type, on_grid, size));
           ctx.add_run(r,

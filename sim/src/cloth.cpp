@@ -74,7 +74,9 @@ void ClothMesh::validate(const std::string& what) const {
     if (a < 0 || a >= nv) fail("attached vertex index out of range");
 }
 
-Tris ClothMesh::surface_triangles() const {
+Tris ClothMesh::surface_triangles() const { return clothbench::surface_triangles(quads); }
+
+Tris surface_triangles(const Quads& quads) {
   std::vector<std::int32_t> t;
   for (Eigen::Index q = 0; q < quads.cols(); ++q) {
     const auto c = quads.col(q);

@@ -79,9 +79,7 @@ LayersUnder::LayersUnder(Collider& collider, const ClothMesh& mesh, Eigen::Index
   if (faces) above_ = mesh.quads.rightCols(mesh.quads.cols() - first_quad_);
   const Points3 x = mesh.positions.leftCols(under);
   const Quads cells = cells_under(mesh.quads, under);
-  ClothMesh sheet;
-  sheet.quads = cells;
-  frame_.triangles = sheet.surface_triangles();
+  frame_.triangles = surface_triangles(cells);
   // a body's triangles wind counter-clockwise seen from outside: away from the cloth's middle
   if (!faces_out(x, cell_normals(x, cells))) frame_.triangles.row(1).swap(frame_.triangles.row(2));
   frame_.moving = true;

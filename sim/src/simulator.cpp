@@ -244,7 +244,7 @@ bool Simulator::step() {
   limit_ms += limit.ms();
   if (layers_) {
     cloth.restart();
-    hold_out_of_layers();
+    hold_out(layers_->under(), layers_->contacts().data());
     cloth_ms += cloth.ms();
   }
   // cloth against itself once more, last: the limit's second pass moves points along their springs and can carry
@@ -253,8 +253,8 @@ bool Simulator::step() {
   if (params_.self_contact > 0 && params_.self_contact_last) {
     cdr.restart();
     self_.respond(mesh_, merged_groups_, x_, v_, inv_m_, params_.self_contact);
-    hold_out_of_body();
-    hold_out_of_layers();
+    if (collider_) hold_out(0, contacts_.data());
+    if (layers_) hold_out(layers_->under(), layers_->contacts().data());
     const double ms = cdr.ms();
     cdr_ms += ms, cloth_ms += ms;
   }
@@ -342,10 +342,9 @@ void Simulator::attract_seams() {
   }
 }
 
-void Simulator::hold_out_of_body() {
-  if (!collider_) return;
-  for (Eigen::Index i = 0; i < x_.cols(); ++i) {
-    const Contact& c = contacts_[static_cast<std::size_t>(i)];
+void Simulator::hold_out(Eigen::Index first, const Contact* contacts) {
+  for (Eigen::Index i = first; i < x_.cols(); ++i) {
+    const Contact& c = contacts[i - first];
     if (c.hit && inv_m_[i] != 0) stop_into_body(col(v_, i), c);
   }
 }
@@ -371,15 +370,6 @@ void Simulator::respond_to_layers() {
   const auto above = static_cast<std::size_t>(x_.cols() - layers_->under());
   for (std::size_t k = 0; k < above; ++k) respond_at(layers_->under() + Eigen::Index(k), contacts[k]);
   if (params_.face_queries) respond_faces(layers_->first_quad(), contacts.data() + above);
-}
-
-void Simulator::hold_out_of_layers() {
-  if (!layers_) return;
-  const auto& contacts = layers_->contacts();
-  for (std::size_t k = 0; k < static_cast<std::size_t>(x_.cols() - layers_->under()); ++k) {
-    const Eigen::Index i = layers_->under() + Eigen::Index(k);
-    if (contacts[k].hit && inv_m_[i] != 0) stop_into_body(col(v_, i), contacts[k]);
-  }
 }
 
 void Simulator::respond() {

@@ -27,7 +27,7 @@ struct PhaseResult {
   double cdr_ms = 0;     ///< collision detection and response
   double cs_ms = 0;      ///< cloth simulation
   double limit_ms = 0;   ///< of cs_ms: the velocity limits
-  double cloth_ms = 0;   ///< of cdr_ms: cloth against cloth (solver.self_contact_mm, collider.layers)
+  double cloth_ms = 0;   ///< of cdr_ms: cloth against cloth (solver.self_contact_mm, collider.cloth_under)
   bool reached = false;  ///< sew: sewn; drape: settled; animate: clip finished
 };
 

@@ -79,8 +79,8 @@ struct Scene {
   /// Collider of the sew and drape phases when it should differ from `collider` (animation
   /// tables dress once with it and measure `collider` on the animation only); "" = `collider`.
   std::string dress_with;
-  /// Collider of an outer layer of garments against the cloth dressed under it ([[garment]] layer), drawn as a
-  /// body at every iteration (Simulator::set_layers_under); "" = none. An image-space one.
+  /// Collider of an outer layer of garments against the cloth dressed under it ([[garment]] layer), given it as a
+  /// moving body (Simulator::set_layers_under); "" = none. An image-space one.
   std::string cloth_under;
   /// The cloth under answered this much thicker [mm] (BodyBetweenFrames' skin), below collider_options.tol.
   double cloth_skin_mm = 0;

@@ -50,6 +50,9 @@ struct ClothMesh {
 /// `origin` spanned by unit vectors `u` and `v`: structural, shear and flexion springs and quads.
 ClothMesh make_grid_cloth(int nx, int ny, Real spacing, const Vec3& origin, const Vec3& u, const Vec3& v);
 
+/// Cells as triangles: every quad as two (0 1 2, 0 2 3), a triangle cell (corner 2 repeated as 3) as one (3 x nt).
+Tris surface_triangles(const Quads& quads);
+
 /// Sewn points (Durupinar 3.1): per vertex of `vertex_count`, the point it moves as, its own index or its sewn
 /// group's first member (`Simulator::sewn_points()`; members out of range are skipped).
 std::vector<int> sewn_point_of(std::size_t vertex_count, const std::vector<std::vector<int>>& groups);

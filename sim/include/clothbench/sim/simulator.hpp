@@ -234,8 +234,8 @@ class Simulator {
   // the responses of the midpoints of the quads from first_quad on (their contacts in order) to their vertices
   void respond_faces(Eigen::Index first_quad, const Contact* contacts);
   void respond_to_layers();
-  void hold_out_of_layers();  // as hold_out_of_body, against the layers under
-  void hold_out_of_body();  // no vertex in contact keeps a velocity into the body (relative to it)
+  // no vertex from `first` on in contact (contacts[i - first]) keeps a velocity into what it touches (relative to it)
+  void hold_out(Eigen::Index first, const Contact* contacts);
   void integrate_positions();
   void merge_seams();
   void group_merged_pairs();
