@@ -119,7 +119,7 @@ void lead_in(Animation& a, FramePass& pass) {
 void look_at_frame(Animation& a, long f, double t, RunResult& r) {
   const RunContext& run = a.run;
   const StrainStats strain = run.sim.strain();
-  r.animate_strain_max = std::max(r.animate_strain_max, double(strain.max));
+  note_frame_strain(run.sim, strain, t, r);
   const bool measured = run.options.measure_frames && a.alive;
   if (measured || run.options.on_frame) {  // the exact body only when something looks at it
     const BodyFrame& exact = run.source.exact(run.frame, a.exact_scratch);

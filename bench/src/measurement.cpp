@@ -40,9 +40,10 @@ std::string describe_point(const Simulator& sim, long k, double depth_mm) {
   const auto p = sim.quad_midpoints().col(q);
   const auto& c = sim.mesh().quads;
   char text[200];
-  std::snprintf(text, sizeof text, "the midpoint of quad %d (vertices %d, %d, %d, %d) at (%.3f, %.3f, %.3f) m, %.1f mm "
-                "inside at the end", q, c(0, q), c(1, q), c(2, q), c(3, q), double(p(0)), double(p(1)), double(p(2)),
-                depth_mm);
+  std::snprintf(text, sizeof text,
+                "the midpoint of quad %d (vertices %d, %d, %d, %d) at (%.3f, %.3f, %.3f) m, %.1f mm "
+                "inside at the end",
+                q, c(0, q), c(1, q), c(2, q), c(3, q), double(p(0)), double(p(1)), double(p(2)), depth_mm);
   return text;
 }
 
@@ -59,7 +60,8 @@ std::string describe_spring(const Simulator& sim, int s) {
   const int ends[2] = {mesh.springs(0, s), mesh.springs(1, s)};
   int in_contact = 0, on_seam = 0;
   for (int v : ends) {
-    in_contact += sim.contacts().size() > static_cast<std::size_t>(v) && sim.contacts()[static_cast<std::size_t>(v)].hit;
+    in_contact +=
+        sim.contacts().size() > static_cast<std::size_t>(v) && sim.contacts()[static_cast<std::size_t>(v)].hit;
     on_seam += (mesh.seam_pairs.array() == v).any();
   }
   const double y = 0.5 * double(sim.positions()(1, ends[0]) + sim.positions()(1, ends[1]));
@@ -73,7 +75,8 @@ std::string describe_spring(const Simulator& sim, int s) {
 // pass through, the most frequent three pairs ("" when none cross)
 std::string describe_cloth_crossings(const ClothMesh& mesh, const Pairs& springs, const ClothCrossings& c) {
   std::map<std::pair<int, int>, int> pairs;
-  for (const auto& [s, q] : c.where) ++pairs[{mesh.panel[std::size_t(springs(0, s))], mesh.panel[std::size_t(mesh.quads(0, q))]}];
+  for (const auto& [s, q] : c.where)
+    ++pairs[{mesh.panel[std::size_t(springs(0, s))], mesh.panel[std::size_t(mesh.quads(0, q))]}];
   std::vector<std::pair<int, std::pair<int, int>>> by_count;
   for (const auto& [p, n] : pairs) by_count.emplace_back(-n, p);
   std::sort(by_count.begin(), by_count.end());
@@ -89,11 +92,14 @@ std::string describe_seam_gap(const Simulator& sim) {
   const ClothMesh& mesh = sim.mesh();
   const SeamGap w = sim.widest_seam_gap();
   if (w.vertex < 0 || !(w.gap > 1e-5f)) return "";
-  const auto panel = [&](int v) { return mesh.panel_names[static_cast<std::size_t>(mesh.panel[static_cast<std::size_t>(v)])]; };
+  const auto panel = [&](int v) {
+    return mesh.panel_names[static_cast<std::size_t>(mesh.panel[static_cast<std::size_t>(v)])];
+  };
   char text[240];
   if (w.loose)
-    std::snprintf(text, sizeof text, "vertex %d (panel %s, no partner) %.2f mm from its partner edge (panel %s, near vertex %d)",
-                  w.vertex, panel(w.vertex).c_str(), 1e3 * double(w.gap), panel(w.partner).c_str(), w.partner);
+    std::snprintf(text, sizeof text,
+                  "vertex %d (panel %s, no partner) %.2f mm from its partner edge (panel %s, near vertex %d)", w.vertex,
+                  panel(w.vertex).c_str(), 1e3 * double(w.gap), panel(w.partner).c_str(), w.partner);
   else
     std::snprintf(text, sizeof text, "seam pair (vertices %d-%d, panels %s and %s), %.2f mm apart", w.vertex, w.partner,
                   panel(w.vertex).c_str(), panel(w.partner).c_str(), 1e3 * double(w.gap));
@@ -108,6 +114,12 @@ double proxy_deviation_mm(const BodyFrame& proxy, const BodyFrame& exact) {
   Real m = 0;
   for (const Real x : d) m = std::max(m, std::abs(x));
   return 1e3 * double(m);
+}
+
+void note_frame_strain(const Simulator& sim, const StrainStats& strain, double t, RunResult& r) {
+  if (double(strain.max) <= r.animate_strain_max) return;
+  r.animate_strain_max = double(strain.max);
+  r.animate_strain_max_where = describe_spring(sim, strain.max_spring) + " " + at_time(t);
 }
 
 void measure_frame(const BodyFrame& frame, const Simulator& sim, const StrainStats& strain, double t, RunResult& r) {

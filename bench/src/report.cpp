@@ -243,6 +243,7 @@ void add_accuracy_fields(const RunResult& r, nlohmann::json& row) {
   row["mean_frame_crossings_pct"] = r.frame_mean(&FrameSample::crossings_pct);
   row["worst_frame_cloth_crossings_pct"] = r.frame_max(&FrameSample::cloth_crossings_pct);
   row["worst_frame_strain_max"] = r.frame_max(&FrameSample::strain_max);
+  row["worst_frame_strain_where"] = r.animate_strain_max_where;
   row["depth_max_where"] = r.depth_max_where;
 }
 

@@ -53,6 +53,7 @@ void run_fields(J& j, R& r, F&& f) {
   f(j, "seam_gap_where", r.seam_gap_where);
   f(j, "depth_max_where", r.depth_max_where);
   f(j, "kinetic_energy", r.kinetic_energy), f(j, "animate_strain_max", r.animate_strain_max);
+  f(j, "animate_strain_max_where", r.animate_strain_max_where);
   f(j, "sew_iteration_ms", r.sew_iteration_ms);
   f(j, "converged", r.converged), f(j, "window_seam_gap_mm", r.window_seam_gap_mm);
 }

@@ -53,9 +53,10 @@ void print_spread(const std::vector<RunResult>& runs) {
   if (runs.size() < 2) return;
   std::vector<double> t;
   for (const RunResult& r : runs) t.push_back(r.ms_per_iteration());
-  std::printf("  %zu repetitions: per iteration median %.4f ms, mean %.4f, stddev %.4f (cv %.1f %%), min %.4f, max %.4f\n",
-              runs.size(), median(t), mean(t), stddev(t), 100 * stddev(t) / mean(t), *std::min_element(t.begin(), t.end()),
-              *std::max_element(t.begin(), t.end()));
+  std::printf(
+      "  %zu repetitions: per iteration median %.4f ms, mean %.4f, stddev %.4f (cv %.1f %%), min %.4f, max %.4f\n",
+      runs.size(), median(t), mean(t), stddev(t), 100 * stddev(t) / mean(t), *std::min_element(t.begin(), t.end()),
+      *std::max_element(t.begin(), t.end()));
 }
 
 // ", the body posed N times a frame" where body.pose_fps poses it more than once
@@ -109,20 +110,21 @@ void print_summary(const RunArgs& a, const RunResult& r) {
   std::printf("  cloth through itself: %zu structural springs (%.2f %%) through a triangle of the cloth%s%s\n",
               r.accuracy.cloth_crossings, r.accuracy.cloth_crossings_pct,
               r.cloth_crossings_where.empty() ? "" : "; panels: ", r.cloth_crossings_where.c_str());
-  if (r.frames > 0)
-    std::printf("  seam gap when the measured window starts %.2f mm\n", r.window_seam_gap_mm);
+  if (r.frames > 0) std::printf("  seam gap when the measured window starts %.2f mm\n", r.window_seam_gap_mm);
   if (r.frames > 0 && a.every_frame)
     std::printf(
         "  worst frame: %.2f %% inside, depth max %.2f mm, crossings %.2f %%; strain max %.1f %%; cloth through "
         "itself %.2f %% (mean over %zu frames: %.2f %% inside, crossings %.2f %%)\n",
         r.frame_max(&FrameSample::inside_pct), r.frame_max(&FrameSample::depth_max_mm),
         r.frame_max(&FrameSample::crossings_pct), 100 * r.animate_strain_max,
-        r.frame_max(&FrameSample::cloth_crossings_pct), r.frame_samples.size(),
-        r.frame_mean(&FrameSample::inside_pct), r.frame_mean(&FrameSample::crossings_pct));
+        r.frame_max(&FrameSample::cloth_crossings_pct), r.frame_samples.size(), r.frame_mean(&FrameSample::inside_pct),
+        r.frame_mean(&FrameSample::crossings_pct));
   else if (r.frames > 0)
     std::printf("  worst frame: strain max %.1f %% (--every-frame measures inside, depth and crossings too)\n",
                 100 * r.animate_strain_max);
   if (!r.strain_max_where.empty()) std::printf("  strain max at %s\n", r.strain_max_where.c_str());
+  if (!r.animate_strain_max_where.empty())
+    std::printf("  worst frame's strain max at %s\n", r.animate_strain_max_where.c_str());
   if (!r.seam_gap_where.empty()) std::printf("  widest seam gap: %s\n", r.seam_gap_where.c_str());
   if (!r.depth_max_where.empty()) std::printf("  deepest: %s\n", r.depth_max_where.c_str());
   print_verdict(r);
@@ -180,7 +182,9 @@ void add_run_command(CLI::App& app, Action& action) {
   cmd->add_flag("--end-state", args->end_state,
                 "--json: keep the cloth at its end in each row, as a reference or a run for `report --reference`");
   cmd->add_option("--png", args->png, "write a picture of the dressed body (front, side, back)");
-  cmd->add_option("--gltf", args->gltf, "export the dressed body as binary glTF (.glb): the end state, or for a moving body the animation (morph targets, at most 16 frames kept); cloth vertices carry _STRAIN and _DISTANCE");
+  cmd->add_option("--gltf", args->gltf,
+                  "export the dressed body as binary glTF (.glb): the end state, or for a moving body the animation "
+                  "(morph targets, at most 16 frames kept); cloth vertices carry _STRAIN and _DISTANCE");
   cmd->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   cmd->add_flag("--strict", args->strict, "exit 4 when the run misses the accuracy limits");
   cmd->add_flag("--estimate", args->estimate, "print how long the run may take and stop (nothing simulated)");

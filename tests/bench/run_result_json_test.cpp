@@ -41,6 +41,8 @@ TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   r.strain_max_where = "spring 4863";
   r.seam_gap_where = "seam pair 3";
   r.depth_max_where = "vertex 1916";
+  r.animate_strain_max = 0.23;
+  r.animate_strain_max_where = "spring 10273 at t = 2.50 s";
   r.sew_iteration_ms = {0.5f, 0.25f};
   r.converged = true;
   r.frame_samples = {{1.033, 0.1, 0.5, 0.2, 0.12, 0.08}, {1.067, 0, 0, 0.05, 0.11, 0.07}};
@@ -61,6 +63,7 @@ TEST(RunResultJson, EveryMeasuredFieldSurvivesTheRoundTrip) {
   EXPECT_EQ(b.window_seam_gap_mm, 1.5);
   EXPECT_EQ(b.depth_max_where, "vertex 1916");
   EXPECT_EQ(b.seam_gap_where, "seam pair 3");
+  EXPECT_EQ(b.animate_strain_max_where, "spring 10273 at t = 2.50 s");
   RunResult none = r;
   none.divergence.reset();
   EXPECT_FALSE(run_result_from_json(to_json(none)).divergence.has_value());

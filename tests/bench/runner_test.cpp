@@ -91,6 +91,11 @@ TEST(Runner, EveryFrameIsMeasuredAndTheDeepestPointIsNamed) {
   EXPECT_EQ(row.at("worst_frame_inside_pct").get<double>(), r.frame_max(&FrameSample::inside_pct));
   EXPECT_EQ(row.at("mean_frame_crossings_pct").get<double>(), r.frame_mean(&FrameSample::crossings_pct));
   EXPECT_EQ(row.at("depth_max_where").get<std::string>(), r.depth_max_where);
+  // and where and when the most strained frame's most strained spring was
+  ASSERT_GT(r.animate_strain_max, 0);
+  EXPECT_EQ(r.animate_strain_max_where.rfind("spring ", 0), 0u) << r.animate_strain_max_where;
+  EXPECT_NE(r.animate_strain_max_where.find(" at t = "), std::string::npos) << r.animate_strain_max_where;
+  EXPECT_EQ(row.at("worst_frame_strain_where").get<std::string>(), r.animate_strain_max_where);
 }
 
 // without --every-frame the end state's deepest point is named, a quad's midpoint too with face queries

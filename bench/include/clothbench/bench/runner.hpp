@@ -81,6 +81,7 @@ struct RunResult {
                                 ///< contact), or of the end state when that is deeper ("" when none is inside)
   double kinetic_energy = 0;
   double animate_strain_max = 0;           ///< largest structural strain seen at any animation frame
+  std::string animate_strain_max_where;    ///< that frame's most strained spring (as strain_max_where) and its time
   std::vector<FrameSample> frame_samples;  ///< RunOptions::measure_frames: every measured animation frame
   double window_seam_gap_mm = 0;      ///< largest seam pair gap when the measured animation window starts [mm]
   std::vector<float> sew_iteration_ms;  ///< wall time of every sew iteration (RunOptions::trace)
