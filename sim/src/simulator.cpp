@@ -95,6 +95,18 @@ void validate(const Material& m, const SolverParams& p) {
   require(!auto_k || p.dt > 0, "dt", "given (> 0 s) when a stiffness is automatic (0)", p.dt);
 }
 
+// the orthonormal frame of body triangle t (its first edge, its normal, and their cross product, as columns): an
+// attached vertex's offset turns with it
+Eigen::Matrix3f triangle_frame(const BodyFrame& body, int t) {
+  const Vec3 p0 = body.positions.col(body.triangles(0, t));
+  const Vec3 e1 = body.positions.col(body.triangles(1, t)) - p0, e2 = body.positions.col(body.triangles(2, t)) - p0;
+  Eigen::Matrix3f frame;
+  frame.col(0) = e1.normalized();
+  frame.col(1) = e1.cross(e2).normalized();
+  frame.col(2) = frame.col(0).cross(frame.col(1));
+  return frame;
+}
+
 // column i of a 3 x n matrix as a fixed-size vector reference
 inline Eigen::Ref<Vec3> col(Points3& m, Eigen::Index i) { return m.col(i); }
 
@@ -114,7 +126,7 @@ Simulator::Simulator(ClothMesh mesh, const Material& material, const SolverParam
   validate(material_, params_);
   integrator_ = IntegratorPtr(make_integrator(params_.integrator, params_.integration));
   limiter_ = LimiterPtr(make_limiter(params_.limit, {params_.threshold, params_.limit_passes, params_.limit_speed,
-                                                      params_.limit_tolerance, params_.stiff_factor}));
+                                                     params_.limit_tolerance, params_.stiff_factor}));
   const Eigen::Index nv = mesh_.positions.cols();
   m_ = mesh_.vertex_area * material_.density;
   // dressing Eq. 3: "m is the mass of each point", one mass for all
@@ -174,8 +186,9 @@ void Simulator::set_stiffness() {
     const Real eq4 = Real(0.4 * M_PI) * params_.dt_fraction / params_.dt;
     if (nv) k_auto = std::min(k_auto, eq4 * eq4 * m_.minCoeff());
     if (!(k_auto > 0) || k_auto == std::numeric_limits<Real>::max())
-      throw std::invalid_argument("automatic stiffness: the given stiffnesses alone exceed the stability bound of dt = " +
-                                  std::to_string(params_.dt) + " s; give a smaller dt or softer springs");
+      throw std::invalid_argument(
+          "automatic stiffness: the given stiffnesses alone exceed the stability bound of dt = " +
+          std::to_string(params_.dt) + " s; give a smaller dt or softer springs");
   }
   for (int kind = 0; kind < kSpringKinds; ++kind)
     k_kind_[kind] = factor * (given[kind] == 0 ? ratio[kind] * k_auto : given[kind]);
@@ -184,8 +197,7 @@ void Simulator::set_stiffness() {
   // elastic seams: a zero-length spring per pair, given, or as stiff as the structural springs (the
   // cloth's own scale at any resolution; a sliver vertex on an outline is no more at risk from it
   // than from its grid springs, and seam_reach and seam_speed bound the pull from afar)
-  seam_k_ = Scalars::Constant(mesh_.seam_pairs.cols(),
-                              seam_auto ? k_kind_[0] : params_.seam_stiffness);
+  seam_k_ = Scalars::Constant(mesh_.seam_pairs.cols(), seam_auto ? k_kind_[0] : params_.seam_stiffness);
 }
 
 Real Simulator::stable_dt() const {
@@ -305,8 +317,19 @@ ForceModel Simulator::force_model() const {
   // elastic seams pull in every phase until their pairs merge
   const Vec3 g = phase_gravity();
   const bool elastic = params_.seam_method == SeamMethod::kElastic;
-  return ForceModel{mesh_, k_, seam_k_, merged_, m_, inv_m_, contacts_, g, material_.damping, elastic,
-                    params_.seam_reach, params_.reaction_force, material_.friction};
+  return ForceModel{mesh_,
+                    k_,
+                    seam_k_,
+                    merged_,
+                    m_,
+                    inv_m_,
+                    contacts_,
+                    g,
+                    material_.damping,
+                    elastic,
+                    params_.seam_reach,
+                    params_.reaction_force,
+                    material_.friction};
 }
 
 void Simulator::cap_seam_speeds() {
@@ -473,15 +496,19 @@ bool Simulator::check_divergence() {
 
 void Simulator::attach(const BodyFrame& body) {
   // bind each attached vertex to its closest body triangle (Durupinar 3.2); from now on it is
-  // moved by the body only (1/m = 0)
+  // moved by the body only (1/m = 0), at its offset in that triangle's frame
   attach_tri_.clear();
   attach_bary_.resize(3, static_cast<Eigen::Index>(mesh_.attached.size()));
   attach_offset_.resize(3, attach_bary_.cols());
+  attach_local_.resize(3, attach_bary_.cols());
   for (std::size_t i = 0; i < mesh_.attached.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
     const ClosestPoint cp = closest_point_brute(body, x_.col(mesh_.attached[i]));
     attach_tri_.push_back(cp.triangle);
-    attach_bary_.col(static_cast<Eigen::Index>(i)) = cp.bary;
-    attach_offset_.col(static_cast<Eigen::Index>(i)) = x_.col(mesh_.attached[i]) - cp.point;
+    attach_bary_.col(k) = cp.bary;
+    attach_offset_.col(k) = x_.col(mesh_.attached[i]) - cp.point;
+    attach_local_.col(k) =
+        cp.triangle >= 0 ? Vec3(triangle_frame(body, cp.triangle).transpose() * attach_offset_.col(k)) : Vec3::Zero();
     inv_m_[mesh_.attached[i]] = 0;
     v_.col(mesh_.attached[i]).setZero();
   }
@@ -490,14 +517,15 @@ void Simulator::attach(const BodyFrame& body) {
 void Simulator::follow_attachments(const BodyFrame& body, Real time_before) {
   for (std::size_t i = 0; i < attach_tri_.size(); ++i) {
     if (attach_tri_[i] < 0) continue;
+    const auto j = static_cast<Eigen::Index>(i);
     Vec3 x = Vec3::Zero(), v = Vec3::Zero();
     for (int k = 0; k < 3; ++k) {
       const int bv = body.triangles(k, attach_tri_[i]);
-      x += attach_bary_(k, static_cast<Eigen::Index>(i)) * body.positions.col(bv);
-      v += attach_bary_(k, static_cast<Eigen::Index>(i)) * body.velocities.col(bv);
+      x += attach_bary_(k, j) * body.positions.col(bv);
+      v += attach_bary_(k, j) * body.velocities.col(bv);
     }
     // where the binding point was time_before seconds before the pose (first order)
-    col(x_, mesh_.attached[i]) = x + attach_offset_.col(static_cast<Eigen::Index>(i)) - time_before * v;
+    col(x_, mesh_.attached[i]) = x + triangle_frame(body, attach_tri_[i]) * attach_local_.col(j) - time_before * v;
     col(v_, mesh_.attached[i]) = v;
   }
 }

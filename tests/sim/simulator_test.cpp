@@ -586,6 +586,32 @@ TEST(Simulator, OnePassOfTheLimitHoldsAChainFromItsSupport) {
   EXPECT_GT(strain[0], 0.2f);
 }
 
+TEST(Simulator, AttachedPointsTurnWithTheBody) {
+  // Durupinar 3.2: two attached points, one 2 mm and one 40 mm off a sphere, bound to it; the sphere turned a
+  // quarter turn about its centre and moved: each point is where the same rigid motion takes it, so the
+  // cloth between them is neither stretched nor shortened (an offset that kept its direction in the world
+  // would leave the far point behind and the spring 40 mm x sqrt(2) longer or shorter)
+  const Vec3 centre(0, 1, 0);
+  const Real radius = 0.1f;
+  ClothMesh c = test::two_particles(0.05f, 0);
+  c.positions.col(0) = centre + Vec3(radius + 0.002f, 0, 0);
+  c.positions.col(1) = centre + Vec3(0, 0, radius + 0.04f);
+  c.attached = {0, 1};
+  Simulator sim(c, Material{}, SolverParams{});
+  const BodyFrame body = make_sphere_body(centre, radius, 16, 32);
+  sim.attach(body);
+  const Eigen::AngleAxis<Real> turn(Real(M_PI / 2), Vec3::UnitY());
+  const Vec3 shift(0.3f, 0, 0);
+  BodyFrame turned = body;
+  for (int v = 0; v < body.vertex_count(); ++v)
+    turned.positions.col(v) = centre + shift + turn * (body.positions.col(v) - centre);
+  sim.follow_attachments(turned);
+  for (int k = 0; k < 2; ++k) {
+    const Vec3 expected = centre + shift + turn * (c.positions.col(k) - centre);
+    EXPECT_LT((sim.positions().col(k) - expected).norm(), 1e-5f) << "attached point " << k;
+  }
+}
+
 TEST(Simulator, APointInsideTheBodyIsBroughtToItsSurface) {
   // Durupinar Eq. 3: a vertex 2 cm inside a sphere is moved out along the normal at push_speed (2 m/s: 1 cm per
   // 5 ms step), and is on the surface after the second step; without push_out it stays inside

@@ -171,10 +171,12 @@ class Simulator {
   /// Binds the mesh's `attached` vertices to their closest triangles of `body` (Durupinar 3.2);
   /// until then they move freely (so sewing can first bring a waistband to the body).
   void attach(const BodyFrame& body);
-  /// Moves attached vertices with the body (same topology as in attach()), to where they were `time_before`
-  /// seconds before the body's pose (first order in the body velocity), with the body's velocity.
+  /// Moves attached vertices with the body (same topology as in attach()), each held at its offset from its
+  /// binding point as the triangle turns, to where they were `time_before` seconds before the body's pose (first
+  /// order in the body velocity), with the body's velocity.
   void follow_attachments(const BodyFrame& body, Real time_before = 0);
-  /// Of each attached vertex, its offset from the body point it is bound to (attach()) [m] (3 x attached).
+  /// Of each attached vertex, its offset from the body point it is bound to, when bound (attach()) [m]
+  /// (3 x attached).
   const Points3& attachment_offsets() const { return attach_offset_; }
 
   const char* integrator() const { return integrator_->name(); }
@@ -263,6 +265,7 @@ class Simulator {
   std::vector<int> attach_tri_;       // per attached vertex
   Points3 attach_bary_;               // (3 x na)
   Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
+  Points3 attach_local_;              // that offset in its triangle's frame (triangle_frame) [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
   SelfContacts self_;                            // cloth against itself (SolverParams::self_contact)
   std::optional<LayersUnder> layers_;            // cloth against the layers under it (set_layers_under)
