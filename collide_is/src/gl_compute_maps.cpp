@@ -164,9 +164,9 @@ bool outside(PairAnswer a) { return a.depth > 0.0 || a.side; }
 
 void between_layers(int front, int col, int row, float x, inout PairAnswer a) {
   const int axis = view_axis(front);
-  float cz[8];
-  int cm[8];
-  int crossings = 0, winding = 0;
+  float cz[8], top_z[4], bottom_z[4];
+  int cm[8], top_map[4], bottom_map[4];
+  int crossings = 0, winding = 0, overlaps = 0;
   float last_z = 0.0;
   int last_map = 0;
   for (int layer = 1; layer <= layers; ++layer) {
@@ -183,12 +183,28 @@ void between_layers(int front, int col, int row, float x, inout PairAnswer a) {
       cm[crossings] = last_map;
       ++crossings;
     }
+    if (before < 2 && winding == 2 && overlaps < 4) {
+      top_z[overlaps] = last_z;
+      top_map[overlaps] = last_map;
+    }
+    if (before == 2 && winding < 2 && overlaps < 4) {
+      bottom_z[overlaps] = last_z;
+      bottom_map[overlaps] = last_map;
+      ++overlaps;
+    }
   }
   for (int k = 1; k < crossings; ++k) {
     if (x < cz[k]) continue;
     precise float to_above = cz[k - 1] - x, to_below = x - cz[k];
     a.depth = k % 2 == 1 ? -min(to_above, to_below) : min(to_above, to_below);
     a.map = to_above <= to_below ? cm[k - 1] : cm[k];
+    for (int o = 0; o < overlaps && k % 2 == 1; ++o) {
+      precise float middle = 0.5 * (top_z[o] + bottom_z[o]);
+      precise float to_middle = abs(x - middle);
+      if (top_z[o] > cz[k - 1] || bottom_z[o] < cz[k] || !(to_middle < -a.depth)) continue;
+      a.depth = -to_middle;
+      a.map = x < middle ? top_map[o] : bottom_map[o];
+    }
     return;
   }
   const bool whole = layers == 1 || mask_at(element(peel_map(front, layers), col, row)) != kBody;
@@ -271,7 +287,7 @@ void main() {
     s[view_axis(view)] = z[i];
     precise vec3 e = p - s;
     precise float d = e.x * n.x + e.y * n.y + e.z * n.z;
-    depth = depth_z < 0.0 ? clamp(d, depth_z, 0.0) : d;
+    depth = depth_z > 0.0 ? d : clamp(d, depth_z, 0.0);
     if (!(depth < tol)) {
       answer(k, false, max(d, tol), vec3(0.0), vec3(0.0));
       return;

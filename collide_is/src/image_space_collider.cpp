@@ -142,6 +142,11 @@ struct PairAnswer {
 // the nearer of the two. The pair's answer stands where the layers cannot say: below the last
 // surface of a line the peeling saw whole, or below the last layer kept when there may be more
 // (then, as the pair: inside between the last crossing into the union, or the last layer, and the back view).
+// Where two parts overlap, cloth between them is pinched (Baraff, Witkin and Kass 2003): the union has no
+// way out for it but through one of the parts, which would carry it across a limb and stretch its springs
+// around it. So a point inside the union nearer the middle of an overlap along the line than the union's
+// surface is answered by that middle, where the parts meet: it is sent there along the line, by the
+// overlap's far edge (the surface on the other side of the middle, facing the point), and held there.
 void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAnswer& a) {
   const MapFrame& f = m.frame;
   const int axis = MapFrame::view_axis(front);
@@ -149,8 +154,9 @@ void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAn
     Real z;
     int map;
   };
-  std::array<Crossing, 8> union_crossings{};  // into the union, out of it, into it, ...
-  int crossings = 0, winding = 0;
+  std::array<Crossing, 8> union_crossings{};       // into the union, out of it, into it, ...
+  std::array<std::array<Crossing, 2>, 4> overlaps{};  // where the line is inside two parts: top and bottom
+  int crossings = 0, winding = 0, n_overlaps = 0;
   Crossing last{};
   for (int layer = 1; layer <= f.layers; ++layer) {
     const int map = f.peel_map(front, layer);
@@ -161,6 +167,8 @@ void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAn
     const int before = winding;
     winding = std::max(0, winding + (enters ? 1 : -1));
     if ((before == 0) != (winding == 0)) union_crossings[crossings++] = last;
+    if (before < 2 && winding == 2 && n_overlaps < 4) overlaps[n_overlaps][0] = last;
+    if (before == 2 && winding < 2 && n_overlaps < 4) overlaps[n_overlaps++][1] = last;
   }
   for (int k = 1; k < crossings; ++k) {
     if (x < union_crossings[k].z) continue;
@@ -169,6 +177,13 @@ void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAn
     const Real to_above = above.z - x, to_below = x - below.z;
     a.depth = k % 2 == 1 ? -std::min(to_above, to_below) : std::min(to_above, to_below);
     a.map = to_above <= to_below ? above.map : below.map;
+    for (int o = 0; o < n_overlaps && k % 2 == 1; ++o) {
+      const auto& [top, bottom] = overlaps[o];
+      const Real middle = 0.5f * (top.z + bottom.z), to_middle = std::abs(x - middle);
+      if (top.z > above.z || bottom.z < below.z || !(to_middle < -a.depth)) continue;
+      a.depth = -to_middle;
+      a.map = x < middle ? top.map : bottom.map;
+    }
     return;
   }
   const bool whole = f.layers == 1 || m.mask[element(m, f.peel_map(front, f.layers), col, row)] != MapSet::kBody;
@@ -254,7 +269,7 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
     s[rv] = f.origin(rv) + (a.row + 0.5f) * f.pixel;
     s[MapFrame::view_axis(view)] = maps_.z[i];
     const Real d = (p - s).dot(c.normal);
-    c.depth = depth_z < 0 ? std::clamp(d, depth_z, 0.0f) : d;
+    c.depth = depth_z > 0 ? d : std::clamp(d, depth_z, 0.0f);
     if (!(c.depth < tol)) {
       c = Contact{};
       c.depth = std::max(d, tol);

@@ -123,13 +123,28 @@ TEST(ImageSpaceLayers, AGapEveryCameraSeesCoveredIsOutsideWithLayers) {
 
 // two overlapping spheres (an arm pressed into the torso, as skinning makes them): along X the line
 // enters one, enters the other, leaves the first and leaves the second; a point where they overlap is
-// inside both, which alternating in and out along the line would call a gap
-TEST(ImageSpaceLayers, WhereTwoPartsOverlapThePointIsInside) {
+// inside both, which alternating in and out along the line would call a gap. It is where cloth caught
+// between the parts is pinched: held there (depth 0), not pushed 66 mm out of the union
+TEST(ImageSpaceLayers, WhereTwoPartsOverlapThePointIsInsideAndHeld) {
   const Real r = 0.12f;
   const BodyFrame body = spheres({Vec3(0.0f, 0.5f, 0.0f), Vec3(0.2f, 0.5f, 0.0f)}, r);
   const Contact k = answer(body, 4, Vec3(0.1f, 0.5f, 0.0f));
   EXPECT_TRUE(k.hit);
-  EXPECT_LT(k.depth, -0.02f);  // 66 mm from the union's surface (the circle where the spheres meet)
+  EXPECT_LE(k.depth, 0.0f);
+  EXPECT_GT(k.depth, -0.002f);
+}
+
+// a point inside one of them 40 mm from the middle of their overlap along X, farther from any way out of
+// the union (104 mm along Y or Z, 180 mm along X): it is sent to where the parts meet, along -X, not out
+// through the far side of its part (which, for cloth between an arm and the torso, carries it across the
+// arm and stretches its springs around it)
+TEST(ImageSpaceLayers, APointNearAnOverlapIsSentWhereThePartsMeet) {
+  const Real r = 0.12f;
+  const BodyFrame body = spheres({Vec3(0.0f, 0.5f, 0.0f), Vec3(0.2f, 0.5f, 0.0f)}, r);
+  const Contact k = answer(body, 4, Vec3(0.14f, 0.5f, 0.0f));
+  ASSERT_TRUE(k.hit);
+  EXPECT_NEAR(k.depth, -0.04f, 0.004f);
+  EXPECT_LT(k.normal.x(), -0.9f) << k.normal.transpose();
 }
 
 TEST(GlMaps, SameAsCpuWithPeeledLayers) {
