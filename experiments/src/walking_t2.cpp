@@ -203,7 +203,8 @@ std::vector<WalkVariant> response_variants() {
                is_cpu});
   v.push_back(
       {"stable, body held per frame", "walk_07_01", "stable", "/held", {"body.move_between_frames=false"}, is_cpu});
-  // the dress's scene poses the body twice a frame (body.pose_fps): once, the knee passes through the hem on walk_08_02
+  // the dress's scene poses the body twice a frame (body.pose_fps): once, the knee can pass through the hem on
+  // walk_08_02
   v.push_back({"stable, body posed once per frame",
                "walk_08_02",
                "stable",
@@ -454,10 +455,8 @@ void walk_garment(ExperimentContext& ctx, std::size_t i, const WalkGarment& g, W
 // the page's second paragraph: how the body moves and is answered, and the ablation rows
 std::string body_description(double proxy_mm) {
   return "How the body moves (scenes/README.md, `[body]`): it is posed once per frame, at the frame's end (the dress "
-         "twice, `body.pose_fps = 60`: on walk_08_02 a knee moves farther in a frame than half its thickness, passes "
-         "through the hem between two poses and leaves its springs stretched far beyond the limit; the row \"body "
-         "posed "
-         "once per frame\" measures it), and each "
+         "twice, `body.pose_fps = 60`: on walk_08_02 a knee moves farther in a frame than half its thickness and "
+         "can pass through the hem between two poses; the row \"body posed once per frame\" measures it), and each "
          "cloth step within the pose's interval sees the contacts as they were at the step's time, d(t - tau) = d(t) + "
          "(n . v_body) tau (`body.move_between_frames`); points found inside are moved out along the contact normal "
          "(`solver.push_out`, Durupinar Eq. 3); the walking paper's reaction force is on (walking Eq. 16, "
