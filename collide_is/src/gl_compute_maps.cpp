@@ -158,15 +158,28 @@ bool blend(int view, float a_world, float b_world, inout vec3 n_out, inout vec3 
 struct PairAnswer {
   float depth;
   int map, col, row;
-  bool side;
+  bool side, folded;
 };
 bool outside(PairAnswer a) { return a.depth > 0.0 || a.side; }
+
+// a point inside the union between above_z and below_z: to the middle of an overlap there when nearer
+void send_to_pinch(float top_z[4], int top_map[4], float bottom_z[4], int bottom_map[4], int overlaps, float x,
+                   float above_z, float below_z, inout PairAnswer a) {
+  for (int o = 0; o < overlaps; ++o) {
+    precise float middle = 0.5 * (top_z[o] + bottom_z[o]);
+    precise float to_middle = abs(x - middle);
+    if (top_z[o] > above_z || bottom_z[o] < below_z || !(to_middle < -a.depth)) continue;
+    a.depth = -to_middle;
+    a.map = x < middle ? top_map[o] : bottom_map[o];
+  }
+}
 
 void between_layers(int front, int col, int row, float x, inout PairAnswer a) {
   const int axis = view_axis(front);
   float cz[8], top_z[4], bottom_z[4];
   int cm[8], top_map[4], bottom_map[4];
   int crossings = 0, winding = 0, overlaps = 0;
+  bool folded = false;
   float last_z = 0.0;
   int last_map = 0;
   for (int layer = 1; layer <= layers; ++layer) {
@@ -177,6 +190,7 @@ void between_layers(int front, int col, int row, float x, inout PairAnswer a) {
     last_map = map;
     const bool enters = layer == 1 || raw_normal(i)[axis] > 0.0;
     const int before = winding;
+    if (before == 0 && !enters) folded = true;
     winding = max(0, winding + (enters ? 1 : -1));
     if ((before == 0) != (winding == 0)) {
       cz[crossings] = last_z;
@@ -198,27 +212,24 @@ void between_layers(int front, int col, int row, float x, inout PairAnswer a) {
     precise float to_above = cz[k - 1] - x, to_below = x - cz[k];
     a.depth = k % 2 == 1 ? -min(to_above, to_below) : min(to_above, to_below);
     a.map = to_above <= to_below ? cm[k - 1] : cm[k];
-    for (int o = 0; o < overlaps && k % 2 == 1; ++o) {
-      precise float middle = 0.5 * (top_z[o] + bottom_z[o]);
-      precise float to_middle = abs(x - middle);
-      if (top_z[o] > cz[k - 1] || bottom_z[o] < cz[k] || !(to_middle < -a.depth)) continue;
-      a.depth = -to_middle;
-      a.map = x < middle ? top_map[o] : bottom_map[o];
-    }
+    if (k % 2 == 1) send_to_pinch(top_z, top_map, bottom_z, bottom_map, overlaps, x, cz[k - 1], cz[k], a);
+    a.folded = folded && a.depth > 0.0;
     return;
   }
   const bool whole = layers == 1 || mask_at(element(peel_map(front, layers), col, row)) != kBody;
   if (whole) return;
   const float above_z = winding > 0 ? cz[crossings - 1] : last_z;
   const int above_map = winding > 0 ? cm[crossings - 1] : last_map;
-  precise float d_back = z[element(front + 1, col, row)] - x;
+  const float back = z[element(front + 1, col, row)];
+  precise float d_back = back - x;
   precise float d_above = x - above_z;
   a.depth = max(d_above, d_back);
   a.map = d_above >= d_back ? above_map : front + 1;
+  if (a.depth < 0.0) send_to_pinch(top_z, top_map, bottom_z, bottom_map, overlaps, x, above_z, back, a);
 }
 
 bool pair_answer(int pair, vec3 p, out PairAnswer a) {
-  a = PairAnswer(0.0, 0, 0, 0, false);
+  a = PairAnswer(0.0, 0, 0, 0, false, false);
   const int front = 2 * pair, cu = column_axis(front), rv = row_axis(front), axis = view_axis(front);
   precise float u = (p[cu] - origin[cu]) / pixel, v = (p[rv] - origin[rv]) / pixel;
   if (!(u >= 0.0 && v >= 0.0 && u < float(size) && v < float(size))) return false;
@@ -237,6 +248,8 @@ float key(PairAnswer x) { return x.side ? 1e30 : x.depth; }
 bool replaces(PairAnswer a, PairAnswer b) {
   if (rule == 1) return b.depth > a.depth;  // ViewRule::kAllPairs
   if (rule == 2) return b.depth < a.depth;  // ViewRule::kAnyPair
+  const int rank_a = outside(a) ? (a.folded ? 0 : 2) : 1, rank_b = outside(b) ? (b.folded ? 0 : 2) : 1;
+  if (rank_a != rank_b) return rank_b > rank_a;
   if (outside(a)) return outside(b) && key(b) < key(a);
   return outside(b) || b.depth > a.depth;
 }
@@ -245,7 +258,7 @@ bool choose(vec3 p, out PairAnswer best) {
   if (views == 2) return pair_answer(0, p, best);
   bool any = false;
   PairAnswer a;
-  best = PairAnswer(0.0, 0, 0, 0, false);
+  best = PairAnswer(0.0, 0, 0, 0, false, false);
   for (int pair = 0; pair < views / 2; ++pair)
     if (pair_answer(pair, p, a) && (!any || replaces(best, a))) {
       best = a;

@@ -128,6 +128,9 @@ struct PairAnswer {
   int map = 0;      // the map (a view, or a layer peeled from the front view) whose surface is nearer
   int col = 0, row = 0;  // the pixel (unmirrored window column and row)
   bool side = false;     // a side-layer pixel: the tolerance band outside the silhouette (dressing 5.4)
+  // outside by a line that somewhere left the body more often than it had entered: a closed surface is not
+  // crossed so, a skinned one folded through itself is (an armpit's crease), and that line's count says nothing
+  bool folded = false;
   // seen from outside: beyond the pair's surfaces, nothing drawn, or the side layer
   bool outside() const { return depth > 0 || side; }
 };
@@ -147,16 +150,31 @@ struct PairAnswer {
 // around it. So a point inside the union nearer the middle of an overlap along the line than the union's
 // surface is answered by that middle, where the parts meet: it is sent there along the line, by the
 // overlap's far edge (the surface on the other side of the middle, facing the point), and held there.
+struct Crossing {
+  Real z;
+  int map;
+};
+using Overlaps = std::array<std::array<Crossing, 2>, 4>;  // where the line is inside two parts: top and bottom
+
+// a point inside the union between above_z and below_z: to the middle of an overlap there, where the parts meet,
+// when it is nearer than the surface a answers by
+void send_to_pinch(const Overlaps& overlaps, int n, Real x, Real above_z, Real below_z, PairAnswer& a) {
+  for (int o = 0; o < n; ++o) {
+    const auto& [top, bottom] = overlaps[static_cast<std::size_t>(o)];
+    const Real middle = 0.5f * (top.z + bottom.z), to_middle = std::abs(x - middle);
+    if (top.z > above_z || bottom.z < below_z || !(to_middle < -a.depth)) continue;
+    a.depth = -to_middle;
+    a.map = x < middle ? top.map : bottom.map;
+  }
+}
+
 void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAnswer& a) {
   const MapFrame& f = m.frame;
   const int axis = MapFrame::view_axis(front);
-  struct Crossing {
-    Real z;
-    int map;
-  };
-  std::array<Crossing, 8> union_crossings{};       // into the union, out of it, into it, ...
-  std::array<std::array<Crossing, 2>, 4> overlaps{};  // where the line is inside two parts: top and bottom
+  std::array<Crossing, 8> union_crossings{};  // into the union, out of it, into it, ...
+  Overlaps overlaps{};
   int crossings = 0, winding = 0, n_overlaps = 0;
+  bool folded = false;
   Crossing last{};
   for (int layer = 1; layer <= f.layers; ++layer) {
     const int map = f.peel_map(front, layer);
@@ -165,6 +183,7 @@ void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAn
     last = {m.z[i], map};
     const bool enters = layer == 1 || m.raw_normal_at(i)[axis] > 0;
     const int before = winding;
+    if (before == 0 && !enters) folded = true;
     winding = std::max(0, winding + (enters ? 1 : -1));
     if ((before == 0) != (winding == 0)) union_crossings[crossings++] = last;
     if (before < 2 && winding == 2 && n_overlaps < 4) overlaps[n_overlaps][0] = last;
@@ -177,21 +196,17 @@ void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAn
     const Real to_above = above.z - x, to_below = x - below.z;
     a.depth = k % 2 == 1 ? -std::min(to_above, to_below) : std::min(to_above, to_below);
     a.map = to_above <= to_below ? above.map : below.map;
-    for (int o = 0; o < n_overlaps && k % 2 == 1; ++o) {
-      const auto& [top, bottom] = overlaps[o];
-      const Real middle = 0.5f * (top.z + bottom.z), to_middle = std::abs(x - middle);
-      if (top.z > above.z || bottom.z < below.z || !(to_middle < -a.depth)) continue;
-      a.depth = -to_middle;
-      a.map = x < middle ? top.map : bottom.map;
-    }
+    if (k % 2 == 1) send_to_pinch(overlaps, n_overlaps, x, above.z, below.z, a);
+    a.folded = folded && a.depth > 0;
     return;
   }
   const bool whole = f.layers == 1 || m.mask[element(m, f.peel_map(front, f.layers), col, row)] != MapSet::kBody;
   if (whole) return;
   const Crossing above = winding > 0 ? union_crossings[crossings - 1] : last;
-  const Real d_back = m.z[element(m, front + 1, col, row)] - x;
+  const Real back = m.z[element(m, front + 1, col, row)], d_back = back - x;
   a.depth = std::max(x - above.z, d_back);
   a.map = x - above.z >= d_back ? above.map : front + 1;
+  if (a.depth < 0) send_to_pinch(overlaps, n_overlaps, x, above.z, back, a);
 }
 
 // dressing Eq. 5/9, walking Eq. 11/12 along the pair's axis; false when p is outside its image (the pair a
@@ -212,6 +227,7 @@ bool pair_answer(const MapSet& m, const Vec3& p, PairAnswer& a) {
   // the nearer surface's map answers (beyond the local body centre: the front map)
   a.map = d_front >= d_back ? front : front + 1;
   a.side = m.mask[fi] == MapSet::kSide;
+  a.folded = false;
   if (f.layers > 1 && d_front < 0 && m.mask[fi] == MapSet::kBody) between_layers(m, front, a.col, a.row, p[axis], a);
   return true;
 }
@@ -222,8 +238,11 @@ bool replaces(ViewRule rule, const PairAnswer& a, const PairAnswer& b) {
   if (rule == ViewRule::kAnyPair) return b.depth < a.depth;
   // kHull: a pair that sees the point from outside wins: the nearest surface beyond which it lies,
   // else a side-layer answer (a guess of one pixel, not a bound), else a pair that sees nothing;
-  // inside every pair, the pair whose surface is nearest along its axis
+  // inside every pair, the pair whose surface is nearest along its axis. A pair outside only by a folded
+  // line (PairAnswer::folded) wins over none: a pair inside outranks it
   const auto key = [](const PairAnswer& x) { return x.side ? 1e30f : x.depth; };
+  const auto rank = [](const PairAnswer& x) { return x.outside() ? (x.folded ? 0 : 2) : 1; };
+  if (rank(a) != rank(b)) return rank(b) > rank(a);
   if (a.outside()) return b.outside() && key(b) < key(a);
   return b.outside() || b.depth > a.depth;
 }
