@@ -497,7 +497,7 @@ std::string description(const WalkPage& page) {
          "on "
          "both clips (`walk_07_01`, `walk_08_02`); the body frames are evaluated at `body.fps` frames per second of "
          "animation time and the cloth takes `steps/frame` steps of dt per frame, in our stable regime (its limit the "
-         "walking scenes': walking Eq. 5 as warm-started impulses, 3 passes, for the dress, Eq. 5's sweeps, 16 passes, "
+         "walking scenes': walking Eq. 5 as warm-started impulses, 4 passes, for the dress, Eq. 5's sweeps, 16 passes, "
          "for "
          "the skirt, run again after the collision response; results/limiters.md "
          "measures the alternatives, Eq. 6 and fewer passes among them) and at the papers' "
