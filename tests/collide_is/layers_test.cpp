@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "clothbench/collide_is/image_space_collider.hpp"
+#include "clothbench/io/body_loader.hpp"
 #include "is_test_bodies.hpp"
 #include "test_support.hpp"
 
@@ -145,6 +146,27 @@ TEST(ImageSpaceLayers, APointNearAnOverlapIsSentWhereThePartsMeet) {
   ASSERT_TRUE(k.hit);
   EXPECT_NEAR(k.depth, -0.04f, 0.004f);
   EXPECT_LT(k.normal.x(), -0.9f) << k.normal.transpose();
+}
+
+// the walking body on walk_08_02 at 2.60 s (in place): a point in the right armpit 6 mm inside the arm (its
+// inner surface along X), which the front/back pair sees inside too; the vertical line through it crosses the
+// armpit's crease, where the skin folds through itself, and leaves the body twice in a row. Its count called
+// the point outside, and that outside answer won: the cloth there was not answered at all
+TEST(ImageSpaceLayers, ALineThroughAFoldDoesNotCallAPointInsideTheArmOutside) {
+  const std::string path = test::walking_body_path();
+  if (path.empty()) GTEST_SKIP() << "the walking body is not in the data root";
+  const BodyModel model = load_body(path);
+  ColliderOptions o;
+  o.views = 6;
+  o.layers = 5;
+  auto c = make_is_cpu_collider(o);
+  c->set_body(model.frame(model.animation_index("walk_08_02"), 2.60, true));
+  Points3 q(3, 1);
+  q.col(0) = Vec3(-0.1183f, 1.1919f, 0.0064f);
+  Contact k;
+  c->query(PointsView(q), ContactsOut{&k, 1});
+  EXPECT_TRUE(k.hit);
+  EXPECT_LT(k.depth, -0.004f);
 }
 
 TEST(GlMaps, SameAsCpuWithPeeledLayers) {
