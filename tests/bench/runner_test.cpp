@@ -16,6 +16,7 @@
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
 #include "clothbench/sim/sphere_collider.hpp"
+#include "test_support.hpp"
 
 namespace clothbench {
 namespace {
@@ -349,7 +350,8 @@ TEST(Runner, FramesPreparedAheadGiveTheSameRun) {
 
 // a garment placed half inside the body is named on stderr before anything runs; the shipped placement is not
 TEST(Runner, AGarmentPlacedInsideTheBodyIsWarnedAbout) {
-  const std::string src = CLOTHBENCH_SOURCE_DIR, dir = testing::TempDir();
+  const std::string src = CLOTHBENCH_SOURCE_DIR, dir = test::temp_path("inside");
+  std::filesystem::create_directories(dir);
   const auto read = [](const std::string& path) {
     std::ifstream in(path);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

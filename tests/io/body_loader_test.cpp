@@ -12,6 +12,7 @@
 #include "clothbench/io/body_loader.hpp"
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/io/errors.hpp"
+#include "test_support.hpp"
 
 namespace clothbench {
 namespace {
@@ -67,7 +68,7 @@ TEST(BodyLoader, WalkingBodyCountsClosedAndHeight) {
 // the shipped rest body written again with its vertices mapped by f (x, y, z -> new x, y, z)
 std::string rewritten_body(const std::string& name, const std::function<Vec3(const Vec3&)>& f) {
   std::ifstream in(data_path("body/mh_female_walk_rest.obj"));
-  const std::string out = (std::filesystem::temp_directory_path() / ("clothbench_" + name + ".obj")).string();
+  const std::string out = test::temp_path(name + ".obj");
   std::ofstream o(out);
   for (std::string line; std::getline(in, line);) {
     if (line.rfind("v ", 0) == 0) {

@@ -18,6 +18,7 @@
 #include "clothbench/io/data_root.hpp"
 #include "clothbench/sim/body_measure.hpp"
 #include "clothbench/sim/garment_draft.hpp"
+#include "test_support.hpp"
 
 namespace clothbench {
 namespace {
@@ -217,7 +218,7 @@ TEST(Draft, TrousersHaveTheThighAndHipGirthsPlusTheEase) {
 TEST(MeasureCommand, ExitCodes) {
   const char* bin = std::getenv("CLOTHBENCH_BIN");
   if (!bin || !std::filesystem::exists(bin)) GTEST_SKIP() << "CLOTHBENCH_BIN not set";
-  const std::string out = testing::TempDir() + "measure_out.txt";
+  const std::string out = test::temp_path("measure_out.txt");
   const auto run = [&](const std::string& args) {
     const int rc = std::system((std::string(bin) + " measure " + args + " > " + out + " 2>&1").c_str());
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
@@ -226,15 +227,15 @@ TEST(MeasureCommand, ExitCodes) {
     std::ifstream in(out);
     return std::string(std::istreambuf_iterator<char>(in), {});
   };
-  const std::string tetrahedron = testing::TempDir() + "tetrahedron.obj";
+  const std::string tetrahedron = test::temp_path("tetrahedron.obj");
   std::ofstream(tetrahedron) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
   EXPECT_EQ(run(tetrahedron), 2);
   EXPECT_NE(printed().find("legs"), std::string::npos) << printed();
-  EXPECT_EQ(run(testing::TempDir() + "no_such_body.obj"), 2);
+  EXPECT_EQ(run(test::temp_path("no_such_body.obj")), 2);
   if (!std::filesystem::exists(kDebianHumanBody)) return;
   EXPECT_EQ(run("debian:human --json"), 0);
   EXPECT_NE(printed().find("\"waist girth\""), std::string::npos) << printed();
-  const std::string drafted = testing::TempDir() + "drafted_skirt.pattern";
+  const std::string drafted = test::temp_path("drafted_skirt.pattern");
   EXPECT_EQ(run("debian:human --draft skirt --size L --out " + drafted), 0) << printed();
   EXPECT_NE(printed().find("12 cm of ease"), std::string::npos) << printed();
   EXPECT_TRUE(std::filesystem::exists(drafted));
