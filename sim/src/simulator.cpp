@@ -499,16 +499,14 @@ void Simulator::attach(const BodyFrame& body) {
   // moved by the body only (1/m = 0), at its offset in that triangle's frame
   attach_tri_.clear();
   attach_bary_.resize(3, static_cast<Eigen::Index>(mesh_.attached.size()));
-  attach_offset_.resize(3, attach_bary_.cols());
   attach_local_.resize(3, attach_bary_.cols());
   for (std::size_t i = 0; i < mesh_.attached.size(); ++i) {
     const auto k = static_cast<Eigen::Index>(i);
     const ClosestPoint cp = closest_point_brute(body, x_.col(mesh_.attached[i]));
     attach_tri_.push_back(cp.triangle);
     attach_bary_.col(k) = cp.bary;
-    attach_offset_.col(k) = x_.col(mesh_.attached[i]) - cp.point;
-    attach_local_.col(k) =
-        cp.triangle >= 0 ? Vec3(triangle_frame(body, cp.triangle).transpose() * attach_offset_.col(k)) : Vec3::Zero();
+    const Vec3 offset = x_.col(mesh_.attached[i]) - cp.point;
+    attach_local_.col(k) = cp.triangle >= 0 ? Vec3(triangle_frame(body, cp.triangle).transpose() * offset) : offset;
     inv_m_[mesh_.attached[i]] = 0;
     v_.col(mesh_.attached[i]).setZero();
   }

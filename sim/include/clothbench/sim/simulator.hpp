@@ -175,9 +175,9 @@ class Simulator {
   /// binding point as the triangle turns, to where they were `time_before` seconds before the body's pose (first
   /// order in the body velocity), with the body's velocity.
   void follow_attachments(const BodyFrame& body, Real time_before = 0);
-  /// Of each attached vertex, its offset from the body point it is bound to, when bound (attach()) [m]
-  /// (3 x attached).
-  const Points3& attachment_offsets() const { return attach_offset_; }
+  /// Of each attached vertex, its offset from the body point it is bound to (attach()), in its triangle's frame: its
+  /// length is the distance [m] (3 x attached).
+  const Points3& attachment_offsets() const { return attach_local_; }
 
   const char* integrator() const { return integrator_->name(); }
   /// Force evaluations, sub-steps, CG iterations and times of the integrator so far.
@@ -264,8 +264,7 @@ class Simulator {
   std::vector<std::uint8_t> merged_;  // per seam pair
   std::vector<int> attach_tri_;       // per attached vertex
   Points3 attach_bary_;               // (3 x na)
-  Points3 attach_offset_;             // attached vertex minus its binding point [m] (3 x na)
-  Points3 attach_local_;              // that offset in its triangle's frame (triangle_frame) [m] (3 x na)
+  Points3 attach_local_;  // attached vertex minus its binding point, in its triangle's frame [m] (3 x na)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
   SelfContacts self_;                            // cloth against itself (SolverParams::self_contact)
   std::optional<LayersUnder> layers_;            // cloth against the layers under it (set_layers_under)
