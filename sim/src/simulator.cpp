@@ -317,19 +317,8 @@ ForceModel Simulator::force_model() const {
   // elastic seams pull in every phase until their pairs merge
   const Vec3 g = phase_gravity();
   const bool elastic = params_.seam_method == SeamMethod::kElastic;
-  return ForceModel{mesh_,
-                    k_,
-                    seam_k_,
-                    merged_,
-                    m_,
-                    inv_m_,
-                    contacts_,
-                    g,
-                    material_.damping,
-                    elastic,
-                    params_.seam_reach,
-                    params_.reaction_force,
-                    material_.friction};
+  return ForceModel{mesh_, k_, seam_k_, merged_, m_, inv_m_, contacts_, g, material_.damping, elastic,
+                    params_.seam_reach, params_.reaction_force, material_.friction};
 }
 
 void Simulator::cap_seam_speeds() {
