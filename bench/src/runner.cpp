@@ -254,7 +254,11 @@ void wear_next_layer(const RunContext& run, Rig& rig, ClothMesh next, RunResult&
   if (run.scene.cloth_under.empty()) return;
   const Real tol = run.scene.collider_options.tol;
   if (!rig.under) {
-    rig.under = make_collider(run.scene.cloth_under, run.scene.collider_options);
+    // an open sheet, not a skinned body: its layers overlap where the cloth lies on itself, and a wrinkle that faces
+    // in folds a line through it, without either meaning a point is caught between two parts
+    ColliderOptions sheet = run.scene.collider_options;
+    sheet.overlapping_parts = false;
+    rig.under = make_collider(run.scene.cloth_under, sheet);
     rig.under_skin.emplace(*rig.under, tol, Real(run.scene.cloth_skin_mm * 1e-3));
   }
   // drawn again once the cloth under has moved half the distance a point is answered within

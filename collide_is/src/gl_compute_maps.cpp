@@ -98,7 +98,7 @@ constexpr const char* kQuery = R"(
 layout(local_size_x = 64) in;
 layout(std430, binding = 4) readonly buffer Points { float xyz[]; };
 layout(std430, binding = 5) writeonly buffer Contacts { vec4 contact[]; };
-uniform int views, layers, count, floats, plane, rule;
+uniform int views, layers, count, floats, plane, rule, parts;
 uniform float pixel, tol, max_speed;
 uniform vec3 origin;
 const uint kBody = 1u, kSide = 2u;
@@ -212,8 +212,8 @@ void between_layers(int front, int col, int row, float x, inout PairAnswer a) {
     precise float to_above = cz[k - 1] - x, to_below = x - cz[k];
     a.depth = k % 2 == 1 ? -min(to_above, to_below) : min(to_above, to_below);
     a.map = to_above <= to_below ? cm[k - 1] : cm[k];
-    if (k % 2 == 1) send_to_pinch(top_z, top_map, bottom_z, bottom_map, overlaps, x, cz[k - 1], cz[k], a);
-    a.folded = folded && a.depth > 0.0;
+    if (k % 2 == 1 && parts == 1) send_to_pinch(top_z, top_map, bottom_z, bottom_map, overlaps, x, cz[k - 1], cz[k], a);
+    a.folded = parts == 1 && folded && a.depth > 0.0;
     return;
   }
   const bool whole = layers == 1 || mask_at(element(peel_map(front, layers), col, row)) != kBody;
@@ -225,7 +225,7 @@ void between_layers(int front, int col, int row, float x, inout PairAnswer a) {
   precise float d_above = x - above_z;
   a.depth = max(d_above, d_back);
   a.map = d_above >= d_back ? above_map : front + 1;
-  if (a.depth < 0.0) send_to_pinch(top_z, top_map, bottom_z, bottom_map, overlaps, x, above_z, back, a);
+  if (a.depth < 0.0 && parts == 1) send_to_pinch(top_z, top_map, bottom_z, bottom_map, overlaps, x, above_z, back, a);
 }
 
 bool pair_answer(int pair, vec3 p, out PairAnswer a) {
@@ -436,7 +436,7 @@ void GlComputeMaps::side_layer(int slot, int rings) {
   }
 }
 
-void GlComputeMaps::query(int slot, PointsView points, DepthTest test, ViewRule rule, Real tol, Contact* out) {
+void GlComputeMaps::query(int slot, PointsView points, const AnswerRules& rules, Contact* out) {
   if (points.count == 0) return;
   const Slot& s = slots_[static_cast<std::size_t>(slot)];
   const MapFrame& f = s.shape.frame;
@@ -461,10 +461,11 @@ void GlComputeMaps::query(int slot, PointsView points, DepthTest test, ViewRule 
   gl_.Uniform1i(u("layers"), f.layers);
   gl_.Uniform1i(u("count"), static_cast<GLint>(points.count));
   gl_.Uniform1i(u("floats"), s.shape.float_maps ? 1 : 0);
-  gl_.Uniform1i(u("plane"), test == DepthTest::kTangentPlane ? 1 : 0);
-  gl_.Uniform1i(u("rule"), rule == ViewRule::kAllPairs ? 1 : rule == ViewRule::kAnyPair ? 2 : 0);
+  gl_.Uniform1i(u("plane"), rules.test == DepthTest::kTangentPlane ? 1 : 0);
+  gl_.Uniform1i(u("rule"), rules.rule == ViewRule::kAllPairs ? 1 : rules.rule == ViewRule::kAnyPair ? 2 : 0);
+  gl_.Uniform1i(u("parts"), rules.overlapping_parts ? 1 : 0);
   gl_.Uniform1f(u("pixel"), f.pixel);
-  gl_.Uniform1f(u("tol"), tol);
+  gl_.Uniform1f(u("tol"), rules.tol);
   gl_.Uniform1f(u("max_speed"), s.shape.max_speed);
   gl_.Uniform3f(u("origin"), f.x0, f.y0, f.z0);
   gl_.DispatchCompute(static_cast<GLuint>((points.count + 63) / 64), 1, 1);

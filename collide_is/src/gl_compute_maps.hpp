@@ -28,7 +28,7 @@ class GlComputeMaps {
   void resolve(int slot, int view, int map, GLuint normal, GLuint velocity);
   // dressing 5.4's side layer, `rings` rings, on every view of map set `slot`
   void side_layer(int slot, int rings);
-  void query(int slot, PointsView points, DepthTest test, ViewRule rule, Real tol, Contact* out);
+  void query(int slot, PointsView points, const AnswerRules& rules, Contact* out);
   void copy(int slot, MapSet& maps);
 
  private:

@@ -118,9 +118,9 @@ class GlMapRenderer final : public MapRenderer, public DeviceMaps {
     return out;
   }
 
-  void query(int slot, PointsView points, DepthTest test, ViewRule rule, Real tol, Contact* out) override {
+  void query(int slot, PointsView points, const AnswerRules& rules, Contact* out) override {
     const Current current(*this, Role::kAnswer);
-    compute_->query(slot, points, test, rule, tol, out);
+    compute_->query(slot, points, rules, out);
   }
 
   void copy(int slot, MapSet& maps) override {

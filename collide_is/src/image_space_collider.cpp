@@ -168,7 +168,8 @@ void send_to_pinch(const Overlaps& overlaps, int n, Real x, Real above_z, Real b
   }
 }
 
-void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAnswer& a) {
+// (parts: ColliderOptions::overlapping_parts, the pinch and fold rules on)
+void between_layers(const MapSet& m, bool parts, int front, int col, int row, Real x, PairAnswer& a) {
   const MapFrame& f = m.frame;
   const int axis = MapFrame::view_axis(front);
   std::array<Crossing, 8> union_crossings{};  // into the union, out of it, into it, ...
@@ -196,8 +197,8 @@ void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAn
     const Real to_above = above.z - x, to_below = x - below.z;
     a.depth = k % 2 == 1 ? -std::min(to_above, to_below) : std::min(to_above, to_below);
     a.map = to_above <= to_below ? above.map : below.map;
-    if (k % 2 == 1) send_to_pinch(overlaps, n_overlaps, x, above.z, below.z, a);
-    a.folded = folded && a.depth > 0;
+    if (k % 2 == 1 && parts) send_to_pinch(overlaps, n_overlaps, x, above.z, below.z, a);
+    a.folded = parts && folded && a.depth > 0;
     return;
   }
   const bool whole = f.layers == 1 || m.mask[element(m, f.peel_map(front, f.layers), col, row)] != MapSet::kBody;
@@ -206,13 +207,13 @@ void between_layers(const MapSet& m, int front, int col, int row, Real x, PairAn
   const Real back = m.z[element(m, front + 1, col, row)], d_back = back - x;
   a.depth = std::max(x - above.z, d_back);
   a.map = x - above.z >= d_back ? above.map : front + 1;
-  if (a.depth < 0) send_to_pinch(overlaps, n_overlaps, x, above.z, back, a);
+  if (a.depth < 0 && parts) send_to_pinch(overlaps, n_overlaps, x, above.z, back, a);
 }
 
 // dressing Eq. 5/9, walking Eq. 11/12 along the pair's axis; false when p is outside its image (the pair a
 // template argument: its axes are constants, as they were before there were more views than the papers' two)
 template <int Pair>
-bool pair_answer(const MapSet& m, const Vec3& p, PairAnswer& a) {
+bool pair_answer(const MapSet& m, bool parts, const Vec3& p, PairAnswer& a) {
   const MapFrame& f = m.frame;
   constexpr int front = 2 * Pair, cu = MapFrame::column_axis(front), rv = MapFrame::row_axis(front);
   constexpr int axis = MapFrame::view_axis(front);
@@ -228,7 +229,7 @@ bool pair_answer(const MapSet& m, const Vec3& p, PairAnswer& a) {
   a.map = d_front >= d_back ? front : front + 1;
   a.side = m.mask[fi] == MapSet::kSide;
   a.folded = false;
-  if (f.layers > 1 && d_front < 0 && m.mask[fi] == MapSet::kBody) between_layers(m, front, a.col, a.row, p[axis], a);
+  if (f.layers > 1 && d_front < 0 && m.mask[fi] == MapSet::kBody) between_layers(m, parts, front, a.col, a.row, p[axis], a);
   return true;
 }
 
@@ -248,16 +249,16 @@ bool replaces(ViewRule rule, const PairAnswer& a, const PairAnswer& b) {
 }
 
 // the answering pair of views at p; false when no pair's image holds p
-bool choose(const MapSet& m, ViewRule rule, const Vec3& p, PairAnswer& best) {
-  if (m.frame.views == 2) return pair_answer<0>(m, p, best);  // the papers' front/back: nothing to choose
+bool choose(const MapSet& m, ViewRule rule, bool parts, const Vec3& p, PairAnswer& best) {
+  if (m.frame.views == 2) return pair_answer<0>(m, parts, p, best);  // the papers' front/back: nothing to choose
   bool any = false;
   const auto consider = [&](bool inside_image, const PairAnswer& a) {
     if (inside_image && (!any || replaces(rule, best, a))) best = a, any = true;
   };
   PairAnswer a;
-  consider(pair_answer<0>(m, p, a), a);
-  consider(pair_answer<1>(m, p, a), a);
-  if (m.frame.views == 6) consider(pair_answer<2>(m, p, a), a);
+  consider(pair_answer<0>(m, parts, p, a), a);
+  consider(pair_answer<1>(m, parts, p, a), a);
+  if (m.frame.views == 6) consider(pair_answer<2>(m, parts, p, a), a);
   return any;
 }
 
@@ -268,7 +269,7 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
   const Real tol = options_.tol;
   c.depth = std::numeric_limits<float>::infinity();
   PairAnswer a;
-  if (!choose(maps_, rule_, p, a)) return false;
+  if (!choose(maps_, rule_, options_.overlapping_parts, p, a)) return false;
   const Real depth_z = a.depth;
   const bool plane = test_ == DepthTest::kTangentPlane;
   if (!(depth_z < (plane ? tol + f.pixel : tol))) {
@@ -308,7 +309,7 @@ bool ImageSpaceCollider::answer(const Vec3& p, Contact& c) const {
 void ImageSpaceCollider::query(PointsView points, ContactsOut out) {
   Stopwatch watch;
   std::int64_t hits = 0, degenerate = 0;
-  if (device_ && vertex_count_ > 0) device_->query(slot_, points, test_, rule_, options_.tol, out.data);
+  if (device_ && vertex_count_ > 0) device_->query(slot_, points, {test_, rule_, options_.tol, options_.overlapping_parts}, out.data);
   for (std::size_t k = 0; k < points.count; ++k) {
     Contact& c = out[k];
     const Vec3 p = points[k];

@@ -186,51 +186,54 @@ TEST(EglQueries, AnsweredOnTheDeviceAsOnTheCpu) {
   for (const auto& [name, body] : bodies)
     for (bool floats : {true, false})
       for (int views : {2, 6})
-        for (int layers : {1, 5}) {
-          ColliderOptions o;
-          o.float_maps = floats;
-          o.views = views;
-          o.layers = layers;
-          const std::string what = name + (floats ? " float " : " 8-bit ") + std::to_string(views) + " views " +
-                                   std::to_string(layers) + " layers";
-          ImageSpaceCollider device(make_egl_map_renderer(), o, 0.0, image_space_depth_test(o));
-          ImageSpaceCollider cpu(std::make_unique<AnsweredOnTheCpu>(make_egl_map_renderer()), o, 0.0,
-                                 image_space_depth_test(o));
-          ASSERT_NE(make_egl_map_renderer()->device_maps(), nullptr);
-          const Points3 p = points_near(body, 4000, 31u + static_cast<unsigned>(views + layers));
-          if (name == "walking") {
-            // the rows of the hips and legs only, as a walking run's region
-            Box3 region = bounding_box(body.positions);
-            region.max.y() = region.min.y() + 0.55f * region.size().y();
-            device.set_query_region(region);
-            cpu.set_query_region(region);
+        for (int layers : {1, 5})
+          for (bool parts : {true, false}) {
+            if (!parts && (views != 6 || layers == 1)) continue;  // a sheet's rules: the peeled layers' only
+            ColliderOptions o;
+            o.float_maps = floats;
+            o.views = views;
+            o.layers = layers;
+            o.overlapping_parts = parts;
+            const std::string what = name + (floats ? " float " : " 8-bit ") + std::to_string(views) + " views " +
+                                     std::to_string(layers) + " layers" + (parts ? "" : ", a sheet");
+            ImageSpaceCollider device(make_egl_map_renderer(), o, 0.0, image_space_depth_test(o));
+            ImageSpaceCollider cpu(std::make_unique<AnsweredOnTheCpu>(make_egl_map_renderer()), o, 0.0,
+                                   image_space_depth_test(o));
+            ASSERT_NE(make_egl_map_renderer()->device_maps(), nullptr);
+            const Points3 p = points_near(body, 4000, 31u + static_cast<unsigned>(views + layers));
+            if (name == "walking") {
+              // the rows of the hips and legs only, as a walking run's region
+              Box3 region = bounding_box(body.positions);
+              region.max.y() = region.min.y() + 0.55f * region.size().y();
+              device.set_query_region(region);
+              cpu.set_query_region(region);
+            }
+            device.set_body(body);
+            cpu.set_body(body);
+            expect_identical(device.maps(), cpu.maps(), what + " (maps)");
+            std::vector<Contact> a(static_cast<std::size_t>(p.cols())), b(a.size());
+            device.query(PointsView(p), ContactsOut{a.data(), a.size()});
+            cpu.query(PointsView(p), ContactsOut{b.data(), b.size()});
+            std::size_t hit_differs = 0, hits = 0;
+            double depth = 0, normal = 0, velocity = 0;
+            for (std::size_t k = 0; k < a.size(); ++k) {
+              hit_differs += a[k].hit != b[k].hit;
+              if (!a[k].hit || !b[k].hit) continue;
+              ++hits;
+              depth = std::max(depth, double(std::abs(a[k].depth - b[k].depth)));
+              normal = std::max(normal, double((a[k].normal - b[k].normal).norm()));
+              velocity = std::max(velocity, double((a[k].body_velocity - b[k].body_velocity).norm()));
+            }
+            std::cout << "[ egl queries ] " << what << ": " << hits << " hits of " << a.size() << ", hit differs on "
+                      << hit_differs << ", depth by up to " << depth * 1e6 << " um, normal " << normal << ", velocity "
+                      << velocity << " m/s\n";
+            EXPECT_GT(hits, 100u) << what;
+            EXPECT_LE(hit_differs, software ? 0u : a.size() / 1000) << what;
+            EXPECT_LE(depth, 1e-6) << what;
+            EXPECT_LE(normal, 1e-4) << what;
+            EXPECT_LE(velocity, 1e-4) << what;
+            EXPECT_EQ(device.stats().points, static_cast<std::int64_t>(a.size()));
           }
-          device.set_body(body);
-          cpu.set_body(body);
-          expect_identical(device.maps(), cpu.maps(), what + " (maps)");
-          std::vector<Contact> a(static_cast<std::size_t>(p.cols())), b(a.size());
-          device.query(PointsView(p), ContactsOut{a.data(), a.size()});
-          cpu.query(PointsView(p), ContactsOut{b.data(), b.size()});
-          std::size_t hit_differs = 0, hits = 0;
-          double depth = 0, normal = 0, velocity = 0;
-          for (std::size_t k = 0; k < a.size(); ++k) {
-            hit_differs += a[k].hit != b[k].hit;
-            if (!a[k].hit || !b[k].hit) continue;
-            ++hits;
-            depth = std::max(depth, double(std::abs(a[k].depth - b[k].depth)));
-            normal = std::max(normal, double((a[k].normal - b[k].normal).norm()));
-            velocity = std::max(velocity, double((a[k].body_velocity - b[k].body_velocity).norm()));
-          }
-          std::cout << "[ egl queries ] " << what << ": " << hits << " hits of " << a.size() << ", hit differs on "
-                    << hit_differs << ", depth by up to " << depth * 1e6 << " um, normal " << normal
-                    << ", velocity " << velocity << " m/s\n";
-          EXPECT_GT(hits, 100u) << what;
-          EXPECT_LE(hit_differs, software ? 0u : a.size() / 1000) << what;
-          EXPECT_LE(depth, 1e-6) << what;
-          EXPECT_LE(normal, 1e-4) << what;
-          EXPECT_LE(velocity, 1e-4) << what;
-          EXPECT_EQ(device.stats().points, static_cast<std::int64_t>(a.size()));
-        }
 }
 
 // a point that is not finite is counted as degenerate, never answered, on the device as on the CPU

@@ -37,10 +37,11 @@ BodyFrame spheres(const std::vector<Vec3>& centres, Real r) {
 
 // the is-cpu answer at one point, with 6 views and `layers`, the square fitted to the body (the papers'
 // square, side = body height, would not hold the spheres spread along X)
-Contact answer(const BodyFrame& body, int layers, const Vec3& p) {
+Contact answer(const BodyFrame& body, int layers, const Vec3& p, bool overlapping_parts = true) {
   ColliderOptions o;
   o.views = 6;
   o.layers = layers;
+  o.overlapping_parts = overlapping_parts;
   o.fit_extent = true;
   auto c = make_is_cpu_collider(o);
   c->set_body(body);
@@ -146,6 +147,18 @@ TEST(ImageSpaceLayers, APointNearAnOverlapIsSentWhereThePartsMeet) {
   ASSERT_TRUE(k.hit);
   EXPECT_NEAR(k.depth, -0.04f, 0.004f);
   EXPECT_LT(k.normal.x(), -0.9f) << k.normal.transpose();
+}
+
+// the same point where the surfaces are a sheet of cloth standing in for a body (ColliderOptions::overlapping_parts
+// false: cloth lying on itself overlaps without pinching anything): answered by the nearest way out of the union,
+// 104 mm along Y or Z (90 mm from that surface's tangent plane), not sent 40 mm along -X to where the parts meet
+TEST(ImageSpaceLayers, ASheetStandingInForABodyPinchesNothing) {
+  const Real r = 0.12f;
+  const BodyFrame body = spheres({Vec3(0.0f, 0.5f, 0.0f), Vec3(0.2f, 0.5f, 0.0f)}, r);
+  const Contact k = answer(body, 4, Vec3(0.14f, 0.5f, 0.0f), false);
+  ASSERT_TRUE(k.hit);
+  EXPECT_LT(k.depth, -0.08f);
+  EXPECT_GT(k.normal.x(), -0.9f) << k.normal.transpose();
 }
 
 // the walking body on walk_08_02 at 2.60 s (in place): a point in the right armpit 6 mm inside the arm (its

@@ -24,9 +24,9 @@ class DeviceMaps {
   /// its arrays are not touched), then the side layer of `rings` rings (add_side_layer; 0: none). Returns once
   /// the device has finished, so its time is the drawing's.
   virtual void draw(const BodyFrame& body, const MapSet& shape, int rings, int slot) = 0;
-  /// Every point answered from map set `slot` as ImageSpaceCollider answers from a MapSet with `test`, `rule`
-  /// and `tol` (points that are not finite get an unspecified answer: the caller sets theirs).
-  virtual void query(int slot, PointsView points, DepthTest test, ViewRule rule, Real tol, Contact* out) = 0;
+  /// Every point answered from map set `slot` as ImageSpaceCollider answers from a MapSet by `rules` (points that
+  /// are not finite get an unspecified answer: the caller sets theirs).
+  virtual void query(int slot, PointsView points, const AnswerRules& rules, Contact* out) = 0;
   /// A CPU copy of map set `slot`, every array sized and filled as the CPU path would fill it.
   virtual void copy(int slot, MapSet& maps) = 0;
   /// The device's own time per draw, by phase ("upload", "draw", "depth_copy", "resolve", "side_layer"), mean over

@@ -40,6 +40,15 @@ enum class ViewRule {
   kAnyPair,
 };
 
+/// How a point is answered from a MapSet: the depth test, the rule between views, the tolerance and
+/// ColliderOptions::overlapping_parts (the pinch and fold rules of the peeled layers).
+struct AnswerRules {
+  DepthTest test;
+  ViewRule rule;
+  Real tol;
+  bool overlapping_parts;
+};
+
 /// Image-space collider with maps drawn by OpenGL through OSMesa; name() "is-gl".
 /// Static bodies are rendered once in set_body, moving ones again in every update_body
 /// (velocity maps only when body.moving; update_body of a static frame after static maps

@@ -76,6 +76,9 @@ struct ColliderOptions {
                                 ///< (1: the papers' first and last surface only; up to 8)
   bool tangent_plane = true;    ///< image space: refine near points by the surface's tangent plane (ours);
                                 ///< false: the papers' comparison along the view axis alone (dressing Eq. 9)
+  bool overlapping_parts = true;///< image space: the body is parts that overlap and fold through each other (a skinned
+                                ///< body): cloth between two parts is pinched where they meet, and a line folded through
+                                ///< itself does not call a point outside; false for a sheet of cloth standing in for one
   bool fit_extent = false;      ///< image space: map square fitted to the body, not body height
   bool float_maps = true;       ///< image space: float targets (false: 8-bit colours, Eq. 6/9)
   Real max_speed = 3.0f;        ///< image space, 8-bit velocity encoding: maxv [m/s] (walking Eq. 9)
