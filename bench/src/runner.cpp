@@ -143,6 +143,7 @@ ClothMesh garment_cloth(const Scene& scene, const GarmentSpec& g, const BodyFram
   options.spacing_cm = g.vertices > 0 ? 0 : g.spacing_cm;
   options.attach = g.attach;
   options.on_grid = g.on_grid;
+  options.smooth = g.smooth;
   try {
     ClothMesh garment = build_garment(pattern, options, body);
     if (g.jitter_mm > 0) {  // a jittered placement: one random offset for the whole garment, from its seed

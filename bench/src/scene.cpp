@@ -226,6 +226,7 @@ void visit_fields(G& g, V& v) {
   v(Key{"attach", "", "honour the pattern's attached edges"}, g.attach, Flag{});
   v(Key{"on_grid", "", "Durupinar's construction: the outline drawn on the grid", Hash::kWhenNonzero}, g.on_grid,
     Flag{});
+  v(Key{"smooth", "", "on the grid: Durupinar's step 7, the outline made smooth", Hash::kWhenNonzero}, g.smooth, Flag{});
   v(Key{"jitter_mm", "mm", "> 0: the placed garment moved by a random offset"}, g.jitter_mm, Range{0, 100});
   v(Key{"seed", "", "the jitter's random seed"}, g.seed, Range{0, 1e9});
   v(Key{"layer", "", "dressed a layer at a time, the lowest first, each outside those before", Hash::kWhenNonzero},

@@ -25,6 +25,7 @@ struct GarmentOptions {
   int vertices = 0;         // target vertex count; 0 = use the spacing
   double spacing_cm = 2.0;  // grid spacing when no target is given [cm]
   bool on_grid = false;     // Durupinar's construction (MeshingOptions::on_grid)
+  bool smooth = false;      // and its step 7 (MeshingOptions::smooth)
   bool json = false;
   std::string png;
   std::string on;  // a body file: place the garment on its rest pose and report the placement
@@ -223,6 +224,7 @@ int run_garment(const GarmentOptions& o) {
   const Pattern pat = load_pattern(o.file);
   MeshingOptions mo;
   mo.on_grid = o.on_grid;
+  mo.smooth = o.smooth;
   if (o.vertices > 0)
     mo.target_vertices = o.vertices;
   else
@@ -275,6 +277,9 @@ void add_garment_command(CLI::App& app, Action& action) {
   cmd->add_flag("--on-grid", opts->on_grid,
                 "Durupinar's construction: the outline drawn on the grid (Bresenham lines, a 4-neighbour fill), every "
                 "vertex a grid node");
+  cmd->add_flag("--smooth", opts->smooth,
+                "With --on-grid: Durupinar's step 7, the outline's vertices moved onto the outline as far as keeps "
+                "every structural spring at least half a spacing long");
   cmd->add_flag("--json", opts->json, "Print JSON (keys panels, vertices, springs, seams, seam_pairs, quads)");
   cmd->add_option("--png", opts->png,
                   "Draw the meshed panels and seams into this PNG file (with --on: the garment placed on the body)");

@@ -66,15 +66,18 @@ void pair_seams(const Pattern& pat, const std::vector<PanelGrid>& grids, const s
 
 }  // namespace
 
-MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_grid) {
+MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_grid, bool smooth) {
   validate_pattern(pat);
   if (!(h > 0)) throw std::invalid_argument("pattern " + pat.name + ": grid spacing must be > 0");
+  if (smooth && !on_grid)
+    throw std::invalid_argument("pattern " + pat.name + ": smoothing (Durupinar's step 7) is of an outline drawn on "
+                                "the grid: the ring mesher's outline is smooth already");
   MeshedPattern out;
   out.spacing_cm = h;
   std::vector<PanelGrid> grids;
   std::vector<Panel> drawn(on_grid ? pat.panels.size() : 0);  // on the grid: each panel's outline as drawn there
   for (std::size_t pi = 0; pi < pat.panels.size(); ++pi)
-    grids.push_back(on_grid ? grid_panel_on_grid(pat.panels[pi], h, drawn[pi]) : grid_panel(pat.panels[pi], h));
+    grids.push_back(on_grid ? grid_panel_on_grid(pat.panels[pi], h, smooth, drawn[pi]) : grid_panel(pat.panels[pi], h));
   if (!on_grid) align_seam_vertices(pat, h, grids);  // on the grid, the vertices stay on their nodes
   std::vector<int> offset;
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
@@ -97,7 +100,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_gr
 }
 
 MeshedPattern mesh_pattern(const Pattern& pat, const MeshingOptions& o) {
-  if (o.spacing_cm > 0) return mesh_pattern(pat, o.spacing_cm, o.attach, o.on_grid);
+  if (o.spacing_cm > 0) return mesh_pattern(pat, o.spacing_cm, o.attach, o.on_grid, o.smooth);
   if (o.target_vertices < 8)
     throw std::invalid_argument("pattern " + pat.name + ": need a spacing or >= 8 target vertices");
   // area / spacing^2 ~ vertices: start there (each panel's area counts positive, whichever way its outline
@@ -110,7 +113,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, const MeshingOptions& o) {
   double best_err = 1e300, best_h = std::sqrt(area / o.target_vertices);
   const auto close_enough = [&](double err) { return err <= 0.01 * o.target_vertices; };
   const auto mesh_at = [&](double h) {
-    MeshedPattern m = mesh_pattern(pat, h, o.attach, o.on_grid);
+    MeshedPattern m = mesh_pattern(pat, h, o.attach, o.on_grid, o.smooth);
     const int n = m.mesh.vertex_count();
     const double err = std::abs(n - o.target_vertices);
     if (err < best_err) best_err = err, best_h = h, best = std::move(m);

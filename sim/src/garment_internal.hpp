@@ -44,8 +44,9 @@ PanelGrid grid_panel(const Panel& p, double h);
 // The panel's grid at spacing h by Durupinar's construction (section 2, steps 1-6): the outline's points snapped to
 // their nearest grid nodes and joined by Bresenham lines, the nodes inside them found by a 4-neighbour fill, so that
 // every vertex is a grid node and every structural spring a spacing long; the outline is followed to within half a
-// spacing. `staircase` gets the panel with the outline as drawn on the grid (its cells' inside test).
-PanelGrid grid_panel_on_grid(const Panel& p, double h, Panel& staircase);
+// spacing. `smooth`: then Durupinar's step 7 (MeshingOptions::smooth). `drawn` gets the panel with the outline its
+// vertices follow: as drawn on the grid, or smoothed, the panel's own (its cells' inside test).
+PanelGrid grid_panel_on_grid(const Panel& p, double h, bool smooth, Panel& drawn);
 // A new boundary vertex at pattern point `at` on the outline between boundary neighbours u and w: the cell
 // that joins them is cut into a triangle and the rest, their spring split in two, and the new vertex joined
 // across the cell (where no cell joins them, the triangle u, new, w). Returns its index.

@@ -301,16 +301,67 @@ void fill_inside(const GridFrame& f, PanelGrid& g, std::vector<int>& id) {
     }
 }
 
+// Durupinar's step 7, the jagged outline made smooth (she fits Bezier curves to it; here the drafted outline itself
+// is the smooth curve): each outline vertex moves to its closest point on the outline, and a vertex within the
+// staircase but outside the outline, or inside it nearer than half a spacing, to half a spacing inside it (as the
+// ring mesher's, clear_of_outline);
+// where a move would make a structural spring shorter than half a spacing (a sliver, which takes a millimetre of
+// error as a large strain) or turn a cell over, its vertices go three quarters, a half or a quarter of the way, or
+// stay. Every vertex is judged against its neighbours' moves of the same round, so mirrored panels move alike.
+void smooth_outline(const Panel& p, double h, PanelGrid& g) {
+  const std::size_t n = g.uv.size();
+  std::vector<Vec2d> from = g.uv, to = g.uv;
+  std::vector<double> share(n, 1);
+  for (std::size_t v = 0; v < n; ++v) {
+    const Closest c = closest_on_outline(p.outline, from[v]);
+    const bool out = !inside(p.outline, from[v]) && c.dist > 0;
+    to[v] = g.boundary[v] ? c.point
+            : out         ? c.point + 0.5 * h / c.dist * (c.point - from[v])
+                          : clear_of_outline(p.outline, from[v], c, h);
+  }
+  const auto at = [&](int v) {
+    const auto k = static_cast<std::size_t>(v);
+    return from[k] + share[k] * (to[k] - from[k]);
+  };
+  const auto area = [](const std::array<Vec2d, 4>& q) {
+    double a = 0;
+    for (std::size_t k = 0; k < 4; ++k) a += cross(q[k], q[(k + 1) % 4]);
+    return a;
+  };
+  for (bool cut = true; cut;) {
+    cut = false;
+    std::vector<std::uint8_t> short_of(n, 0);
+    for (std::size_t s = 0; s < g.springs.size(); ++s) {
+      const auto [a, b] = g.springs[s];
+      if (g.kinds[s] == SpringKind::kStructural && (at(a) - at(b)).norm() < 0.5 * h * (1 + 1e-9))
+        short_of[static_cast<std::size_t>(a)] = short_of[static_cast<std::size_t>(b)] = 1;
+    }
+    for (const auto& q : g.quads) {
+      std::array<Vec2d, 4> before, after;
+      for (std::size_t k = 0; k < 4; ++k)
+        before[k] = from[static_cast<std::size_t>(q[k])], after[k] = at(q[k]);
+      if (area(before) * area(after) > 0) continue;
+      for (const int v : q) short_of[static_cast<std::size_t>(v)] = 1;
+    }
+    for (std::size_t v = 0; v < n; ++v)
+      if (short_of[v] && share[v] > 0) share[v] = std::max(0.0, share[v] - 0.25), cut = true;
+  }
+  for (std::size_t v = 0; v < n; ++v) g.uv[v] = at(static_cast<int>(v));
+}
+
 }  // namespace
 
-PanelGrid grid_panel_on_grid(const Panel& p, double h, Panel& staircase) {
+PanelGrid grid_panel_on_grid(const Panel& p, double h, bool smooth, Panel& drawn) {
   const GridFrame f = grid_frame(p, h);
   PanelGrid g;
   g.edge_vertices.resize(static_cast<std::size_t>(p.edge_count()));
   std::vector<int> id(static_cast<std::size_t>(f.nx * f.ny), -1);
-  draw_outline(p, f, g, id, staircase);
+  draw_outline(p, f, g, id, drawn);
   fill_inside(f, g, id);
-  connect_grid(staircase, f, id, g);
+  connect_grid(drawn, f, id, g);
+  if (!smooth) return g;
+  smooth_outline(p, h, g);
+  drawn = p;
   return g;
 }
 

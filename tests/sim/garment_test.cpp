@@ -311,6 +311,37 @@ TEST(Garment, OnTheGridEveryVertexIsAGridNodeAndMirroredSeamsPairUp) {
   EXPECT_GT(strip.mesh.quads.cols(), 0);
 }
 
+// Durupinar's step 7 (MeshingOptions::smooth): the drawn outline's vertices moved onto the outline, as far as keeps
+// every structural spring at least half a spacing long; the seams pair as drawn
+TEST(Garment, SmoothedOnTheGridTheOutlineIsFollowedWithoutSlivers) {
+  const Pattern pat = slanted_pair();
+  for (const double h : {1.7, 2.9, 4.3}) {
+    const MeshedPattern drawn = mesh_pattern(pat, h, true, true), smooth = mesh_pattern(pat, h, true, true, true);
+    ASSERT_EQ(smooth.mesh.vertex_count(), drawn.mesh.vertex_count());
+    EXPECT_EQ(slivers(smooth).total(), 0) << "spacing " << h;
+    for (Eigen::Index s = 0; s < smooth.mesh.springs.cols(); ++s) {
+      if (smooth.mesh.kind[static_cast<std::size_t>(s)] != SpringKind::kStructural) continue;
+      EXPECT_GE(100 * smooth.mesh.rest_length[s], 0.5 * h - 1e-4) << "spring " << s << ", spacing " << h;
+    }
+    int on = 0, boundary = 0;
+    double before = 0, after = 0;
+    for (int v = 0; v < smooth.mesh.vertex_count(); ++v) {
+      if (!smooth.boundary[static_cast<std::size_t>(v)]) continue;
+      const auto& outline = pat.panels[0].outline;
+      const double d = distance_to_outline(outline, smooth.uv.col(v));
+      ++boundary, on += d < 1e-6, after = std::max(after, d);
+      before = std::max(before, distance_to_outline(outline, drawn.uv.col(v)));
+    }
+    std::printf("[ smooth ] spacing %.1f cm: %d of %d outline vertices on the outline, farthest %.2f cm (drawn: %.2f)\n",
+                h, on, boundary, after, before);
+    EXPECT_GE(on, boundary * 3 / 4) << "spacing " << h;
+    EXPECT_LT(after, 0.75 * h) << "spacing " << h;  // drawn: up to a column and a half outward
+    EXPECT_EQ(smooth.seam_pair_count, drawn.seam_pair_count);
+    for (int loose : smooth.seam_loose_count) EXPECT_EQ(loose, 0) << "spacing " << h;
+  }
+  EXPECT_THROW(mesh_pattern(pat, 2.0, true, false, true), std::invalid_argument);  // the ring is smooth already
+}
+
 TEST(Garment, RejectsBadPatterns) {
   Pattern pat = two_panel(40, 50);
   pat.seams.push_back(pat.seams[0]);

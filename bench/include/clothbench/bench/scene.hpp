@@ -48,6 +48,7 @@ struct GarmentSpec {
   double spacing_cm = 2;   ///< grid spacing when vertices = 0 [cm]
   bool attach = true;      ///< honour the pattern's attached edges (Durupinar 3.2)
   bool on_grid = false;    ///< Durupinar's construction: the outline drawn on the grid (MeshingOptions::on_grid)
+  bool smooth = false;     ///< on the grid: Durupinar's step 7, the outline made smooth (MeshingOptions::smooth)
   double jitter_mm = 0;    ///< > 0: the placed garment moved by a random offset, each axis uniform in +-jitter_mm
   int seed = 0;            ///< the jitter's random seed (deterministic: one seed, one placement)
   int layer = 0;           ///< garments are dressed a layer at a time, the lowest first, each placed clear of those

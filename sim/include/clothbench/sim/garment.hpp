@@ -65,6 +65,10 @@ struct MeshingOptions {
   /// snapped to grid nodes and filled 4-neighbour, every vertex a grid node (no spring under a spacing, the outline
   /// jagged by up to half a spacing), seams paired as drawn; false: the ring snapped onto the outline (mesh_pattern)
   bool on_grid = false;
+  /// On the grid: Durupinar's optional step 7, the jagged outline made smooth. Each outline node moves to its
+  /// closest point on the panel's outline, or as far towards it as keeps every structural spring at it at least half
+  /// a spacing long and every cell at it turning the way it did (mesh_pattern)
+  bool smooth = false;
 };
 
 /// The meshed pattern before placement: the cloth with 2D pattern coordinates kept.
@@ -112,7 +116,8 @@ bool outline_self_intersects(const std::vector<Vec2d>& outline);
 /// outline. Springs (structural, shear, flexion) join kept grid neighbours, rest lengths from the
 /// 2D pattern; quads where all four corners are kept, triangles (quads repeating their third corner)
 /// where three are.
-MeshedPattern mesh_pattern(const Pattern& pattern, double spacing_cm, bool attach = true, bool on_grid = false);
+MeshedPattern mesh_pattern(const Pattern& pattern, double spacing_cm, bool attach = true, bool on_grid = false,
+                           bool smooth = false);
 
 /// The length of edge `e` of a panel along its outline [cm].
 double edge_length_cm(const Panel& panel, int e);
