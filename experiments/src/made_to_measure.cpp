@@ -2,8 +2,10 @@
 // and draped on the body they were drafted from: whether they dress it within every limit, and how loose they sit.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -83,20 +85,34 @@ Gap gap_at(const Oracle& oracle, const ClothMesh& cloth, double height_m) {
   return g;
 }
 
-// the two meshers (garment.on_grid): the ring of grid nodes snapped onto the outline, or Durupinar's construction
-const char* mesher(bool on_grid) { return on_grid ? "on the grid" : "ring"; }
+// the three meshers: the ring of grid nodes snapped onto the outline; Durupinar's construction (garment.on_grid); and
+// that with her step 7, the outline made smooth (garment.smooth)
+struct Mesher {
+  const char* label;
+  const char* suffix;  // of its pictures' file names
+  bool on_grid, smooth;
+  const char* style;  // its curves' in the charts
+};
+const Mesher kMeshers[] = {{"ring", "", false, false, "o-"},
+                           {"on the grid", "-grid", true, false, "x--"},
+                           {"on the grid, smoothed", "-smooth", true, true, "s:"}};
 
 // one row: a body, a garment type, a mesher and a size
 struct Row {
   std::string body;
   const Type* type;
-  bool on_grid = false;
+  const Mesher* mesher;
   std::string size;
   bool meets = false;
   std::vector<Gap> gaps;  // one per landmark
   Slivers slivers;
   double spacing_cm = 0;  // the grid's
 };
+
+// whether a body is dressed: every one, or at quick sizes one of each kind (a mesh alone, a rig, a scaled body)
+bool measured(const ExperimentContext& ctx, const Body& b) {
+  return !ctx.quick() || &b == &kBodies[0] || &b == &kBodies[1] || *b.scale;
+}
 
 // the row's vertex count: the type's, or a few at quick sizes
 int vertices(const ExperimentContext& ctx, const Type& type) { return ctx.quick() ? 150 : type.vertices; }
@@ -107,16 +123,17 @@ std::vector<std::string> drafted_sizes(const ExperimentContext& ctx) {
   return ctx.quick() ? std::vector<std::string>{"M", all.back()} : all;
 }
 
-std::vector<std::string> overrides(const ExperimentContext& ctx, const Body& b, const Type& type, bool on_grid,
+std::vector<std::string> overrides(const ExperimentContext& ctx, const Body& b, const Type& type, const Mesher& mesher,
                                    const std::string& size) {
   std::vector<std::string> sets{"body.file=" + std::string(b.file),
                                 "garment.file=",
                                 "garment.fit=" + std::string(type.name),
                                 "garment.size=" + size,
                                 "garment.vertices=" + std::to_string(vertices(ctx, type)),
-                                "garment.on_grid=" + std::string(on_grid ? "true" : "false"),
+                                "garment.on_grid=" + std::string(mesher.on_grid ? "true" : "false"),
                                 "solver.face_queries=true"};
   if (*b.scale) sets.push_back("body.scale=" + std::string(b.scale));
+  if (mesher.smooth) sets.push_back("garment.smooth=true");
   if (ctx.quick()) sets.push_back("stop.max_iterations=40");
   return sets;
 }
@@ -143,9 +160,9 @@ MarkdownTable table() {
 
 // the garment the run drafted and meshed, again (the same body, pattern and target vertex count give the same mesh)
 MeshedPattern drafted(const RunResult& r, const BodyMeasurements& m, const Type& type, const std::string& size,
-                      int vertices, bool on_grid) {
+                      int vertices, const Mesher& mesher) {
   return mesh_pattern(draft_garment(type.name, r.final_body, m, size_ease_cm(size)),
-                      MeshingOptions{0, vertices, true, on_grid});
+                      MeshingOptions{0, vertices, true, mesher.on_grid, mesher.smooth});
 }
 
 // the row's cells, and what the summary gathers from it
@@ -154,7 +171,7 @@ std::vector<std::string> cells(const Body& b, const RunResult& r, const BodyMeas
   for (const char* l : kLandmarks) girths += (l == kLandmarks[0] ? "" : " / ") + num(100 * m[l].value_m, 1);
   std::vector<std::string> c{b.label,
                              row.type->name,
-                             mesher(row.on_grid),
+                             row.mesher->label,
                              row.size,
                              num(size_ease_cm(row.size), 0),
                              girths,
@@ -188,10 +205,10 @@ struct Tally {
   double spacing_lo = 1e300, spacing_hi = 0;  // the grids' [cm]
   std::string m_misses, flat;
 };
-Tally tally(const std::vector<Row>& rows, bool on_grid) {
+Tally tally(const std::vector<Row>& rows, const Mesher& mesher) {
   std::map<std::string, std::vector<const Row*>> by;  // garment and body: its sizes in order
   for (const Row& r : rows)
-    if (r.on_grid == on_grid) by[std::string(r.type->name) + " on " + r.body].push_back(&r);
+    if (r.mesher == &mesher) by[std::string(r.type->name) + " on " + r.body].push_back(&r);
   Tally t;
   for (const auto& [what, sizes] : by) {
     std::vector<double> gap;  // the mean gap at the judged landmark of each size that did not diverge, S to XL
@@ -230,24 +247,36 @@ std::vector<std::string> summary(const std::vector<Row>& rows) {
            std::to_string(t.rows) + " garments without a structural spring under half a spacing (" +
            std::to_string(t.springs) + " such springs in all).";
   };
-  const Tally ring = tally(rows, false), grid = tally(rows, true);
+  std::vector<Tally> t;
+  for (const Mesher& m : kMeshers) t.push_back(tally(rows, m));
+  std::set<std::string> dressed;
+  for (const Row& r : rows) dressed.insert(r.body);
+  const std::size_t bodies = dressed.size();
+  const Tally& grid = t[1];
+  // "yes (ring), no (on the grid), ..." of one criterion
+  const auto verdict = [&](const std::function<bool(const Tally&)>& met) {
+    std::string s;
+    for (std::size_t k = 0; k < t.size(); ++k)
+      s += std::string(k ? ", " : "") + (met(t[k]) ? "yes" : "no") + " (" + kMeshers[k].label + ")";
+    return s;
+  };
   return {
       "The paper (Durupinar section 2): each panel's corners from the body's measurements, joined and filled on the "
       "cloth grid; it gives no measure of the fit nor a time for it.",
-      line(ring, "Ours, one run each, " + std::to_string(std::size(kTypes)) + " garment types on " +
-                     std::to_string(std::size(kBodies)) + " bodies, meshed with the ring snapped onto the outline"),
+      line(t[0], "Ours, one run each, " + std::to_string(std::size(kTypes)) + " garment types on " +
+                     std::to_string(bodies) + " bodies, meshed with the ring snapped onto the outline"),
       line(grid, "Drawn on the grid (Durupinar's construction)") +
           " Every corner moves to a grid node up to a column outward and half a row off; the columns are " +
           num(grid.spacing_lo, 1) + " to " + num(grid.spacing_hi, 1) + " cm wide here, each side of a panel gains " +
           num((size_ease_cm(draft_sizes()[1]) - size_ease_cm(draft_sizes()[0])) / 4, 1) +
           " cm from one size to the next.",
+      line(t[2], "Drawn on the grid and smoothed (her step 7: the outline's vertices moved onto the outline as far as "
+                 "keeps every structural spring at least half a spacing long)"),
       "Verdict: every drafted garment type dresses every body at size M within every limit: " +
-          std::string(ring.m_meets == ring.pairs ? "yes" : "no") + " (ring), " +
-          (grid.m_meets == grid.pairs ? "yes" : "no") + " (on the grid); the gap grows from S to XL: " +
-          (ring.grows == ring.pairs ? "yes" : "no") + " (ring), " + (grid.grows == grid.pairs ? "yes" : "no") +
-          " (on the grid); the generated panels have no spring under half a spacing: " +
-          (ring.clean == ring.rows ? "yes" : "no") + " (ring), " + (grid.clean == grid.rows ? "yes" : "no") +
-          " (on the grid).",
+          verdict([](const Tally& x) { return x.m_meets == x.pairs; }) + "; the gap grows from S to XL: " +
+          verdict([](const Tally& x) { return x.grows == x.pairs; }) +
+          "; the generated panels have no spring under half a spacing: " +
+          verdict([](const Tally& x) { return x.clean == x.rows; }) + ".",
   };
 }
 
@@ -255,9 +284,10 @@ const char* const kDescription =
     "Each garment type `clothbench measure --draft` knows (skirt, sleeveless shirt, shirt with short sleeves, "
     "sleeveless dress, knee-length trousers) is drafted "
     "from each body's own measurements (Durupinar section 2; `[[garment]] fit`, scenes/README.md, says how the "
-    "panels are cut) in sizes S, M, L and XL, meshed in two ways (`garment.on_grid`): the ring of grid nodes snapped "
-    "onto the outline (the default), and Durupinar's construction (the outline's points moved to grid nodes, joined "
-    "by Bresenham lines and filled, every vertex a grid node); then sewn and draped on that body standing still, with "
+    "panels are cut) in sizes S, M, L and XL, meshed in three ways: the ring of grid nodes snapped "
+    "onto the outline (the default), Durupinar's construction (`garment.on_grid`: the outline's points moved to grid "
+    "nodes, joined by Bresenham lines and filled, every vertex a grid node), and that with her step 7 "
+    "(`garment.smooth`: the outline made smooth); then sewn and draped on that body standing still, with "
     "the settings of its scene in scenes/dressing (is-cpu, the stable regime) and face "
     "queries (quad midpoints too, as skirt.toml has them; the shirt with sleeves in shirt.toml's), at 600 vertices "
     "(the shirt with sleeves, the dress and the trousers 800). The "
@@ -274,8 +304,8 @@ const char* const kDescription =
     "time one thread, set-up included.\n\n";
 
 // a picture's or a chart's file name
-std::string figure(const Type& type, bool on_grid) {
-  return "made-to-measure-" + std::string(type.name) + (on_grid ? "-grid" : "");
+std::string figure(const Type& type, const Mesher& mesher) {
+  return "made-to-measure-" + std::string(type.name) + mesher.suffix;
 }
 
 void made_to_measure(ExperimentContext& ctx) {
@@ -284,51 +314,53 @@ void made_to_measure(ExperimentContext& ctx) {
   std::map<std::string, nlohmann::json> series;        // per type: one curve per body and mesher
   std::map<std::string, std::vector<Image>> pictures;  // per figure: each body in size M
   for (const Body& b : kBodies) {
+    if (!measured(ctx, b)) continue;
     std::optional<BodyMeasurements> m;  // the body's, once (its rest pose is every row's final body)
     for (const Type& type : kTypes)
-      for (const bool on_grid : {false, true}) {
+      for (const Mesher& mesher : kMeshers) {
         std::vector<double> x, y;
         for (const std::string& size : drafted_sizes(ctx)) {
-          const RunResult& r = ctx.run("dressing/" + std::string(type.scene) + ".toml", "is-cpu",
-                                       overrides(ctx, b, type, on_grid, size));
-          ctx.add_run(r,
-                      "made-to-measure/" + std::string(b.label) + "/" + type.name + "/" + mesher(on_grid) + "/" + size);
+          const RunResult& r =
+              ctx.run("dressing/" + std::string(type.scene) + ".toml", "is-cpu", overrides(ctx, b, type, mesher, size));
+          ctx.add_run(r, "made-to-measure/" + std::string(b.label) + "/" + type.name + "/" + mesher.label + "/" + size);
           if (!m) m = measure_body(r.final_body);
-          rows.push_back({b.label, &type, on_grid, size});
+          rows.push_back({b.label, &type, &mesher, size});
           Row& row = rows.back();
-          const MeshedPattern mesh = drafted(r, *m, type, size, vertices(ctx, type), on_grid);
+          const MeshedPattern mesh = drafted(r, *m, type, size, vertices(ctx, type), mesher);
           row.slivers = slivers(mesh);
           row.spacing_cm = mesh.spacing_cm;
           t.row(cells(b, r, *m, row));
           if (!row.gaps.empty())
             x.push_back(size_ease_cm(size)), y.push_back(row.gaps[static_cast<std::size_t>(type.judged_at)].mean_mm);
           if (size == "M" && !r.divergence)
-            pictures[figure(type, on_grid)].push_back(ctx.pictures().render(r.final_body, r.mesh, 360, View::kFront));
+            pictures[figure(type, mesher)].push_back(ctx.pictures().render(r.final_body, r.mesh, 360, View::kFront));
         }
-        series[type.name].push_back({{"label", std::string(b.label) + (on_grid ? ", on the grid" : "")},
-                                     {"x", x},
-                                     {"y", y},
-                                     {"style", on_grid ? "x--" : "o-"}});
+        series[type.name].push_back(
+            {{"label", std::string(b.label) + (mesher.on_grid ? ", " + std::string(mesher.label) : "")},
+             {"x", x},
+             {"y", y},
+             {"style", mesher.style}});
       }
   }
   std::string figures;
   for (const Type& type : kTypes) {
     const std::string at = landmark_word(kLandmarks[type.judged_at]);
-    ctx.chart(figure(type, false),
+    ctx.chart(figure(type, kMeshers[0]),
               {{"title", "Drafted " + std::string(type.name) + "s: the gap at the " + at + " against the size's ease"},
                {"xlabel", "ease [cm] (S, M, L, XL)"},
                {"ylabel", "mean gap at the " + at + " [mm]"},
                {"series", series[type.name]}});
-    figures += "![" + std::string(type.name) + " chart](" + figure(type, false) + ".png)\n\n";
-    for (const bool on_grid : {false, true}) {
-      side_by_side(pictures[figure(type, on_grid)]).write_png(ctx.path("pictures/" + figure(type, on_grid) + ".png"));
-      figures += "![each body in its size M " + std::string(type.name) + ", " + mesher(on_grid) + "](pictures/" +
-                 figure(type, on_grid) + ".png)\n\n";
+    figures += "![" + std::string(type.name) + " chart](" + figure(type, kMeshers[0]) + ".png)\n\n";
+    for (const Mesher& mesher : kMeshers) {
+      side_by_side(pictures[figure(type, mesher)]).write_png(ctx.path("pictures/" + figure(type, mesher) + ".png"));
+      figures += "![each body in its size M " + std::string(type.name) + ", " + mesher.label + "](pictures/" +
+                 figure(type, mesher) + ".png)\n\n";
     }
   }
   ctx.write("made-to-measure", "Made-to-measure garments on each body",
             kDescription + t.str() + "\n" + figures + "Pictures drawn by " + ctx.pictures().name() +
-                ", the bodies in the order of the table: each type with the ring mesher, then on the grid.\n",
+                ", the bodies in the order of the table: each type with the ring mesher, then on the grid, then on the grid and "
+                "smoothed.\n",
             summary(rows));
 }
 
