@@ -278,8 +278,8 @@ void add_garment_command(CLI::App& app, Action& action) {
                 "Durupinar's construction: the outline drawn on the grid (Bresenham lines, a 4-neighbour fill), every "
                 "vertex a grid node");
   cmd->add_flag("--smooth", opts->smooth,
-                "With --on-grid: Durupinar's step 7, the outline's vertices moved onto the outline as far as keeps "
-                "every structural spring at least half a spacing long");
+                "With --on-grid: Durupinar's step 7, the outline's vertices moved onto the outline, the seams' vertices "
+                "aligned and every structural spring kept at least half a spacing long");
   cmd->add_flag("--json", opts->json, "Print JSON (keys panels, vertices, springs, seams, seam_pairs, quads)");
   cmd->add_option("--png", opts->png,
                   "Draw the meshed panels and seams into this PNG file (with --on: the garment placed on the body)");

@@ -270,8 +270,9 @@ std::vector<std::string> summary(const std::vector<Row>& rows) {
           num(grid.spacing_lo, 1) + " to " + num(grid.spacing_hi, 1) + " cm wide here, each side of a panel gains " +
           num((size_ease_cm(draft_sizes()[1]) - size_ease_cm(draft_sizes()[0])) / 4, 1) +
           " cm from one size to the next.",
-      line(t[2], "Drawn on the grid and smoothed (her step 7: the outline's vertices moved onto the outline as far as "
-                 "keeps every structural spring at least half a spacing long)"),
+      line(t[2], "Drawn on the grid and smoothed (her step 7: the outline's vertices moved onto the outline, then the "
+                 "seams' vertices aligned as the ring mesher aligns them and every spring kept at least half a spacing "
+                 "long)"),
       "Verdict: every drafted garment type dresses every body at size M within every limit: " +
           verdict([](const Tally& x) { return x.m_meets == x.pairs; }) + "; the gap grows from S to XL: " +
           verdict([](const Tally& x) { return x.grows == x.pairs; }) +
@@ -287,7 +288,7 @@ const char* const kDescription =
     "panels are cut) in sizes S, M, L and XL, meshed in three ways: the ring of grid nodes snapped "
     "onto the outline (the default), Durupinar's construction (`garment.on_grid`: the outline's points moved to grid "
     "nodes, joined by Bresenham lines and filled, every vertex a grid node), and that with her step 7 "
-    "(`garment.smooth`: the outline made smooth); then sewn and draped on that body standing still, with "
+    "(`garment.smooth`: the outline made smooth, the seams' vertices aligned, no spring under half a spacing); then sewn and draped on that body standing still, with "
     "the settings of its scene in scenes/dressing (is-cpu, the stable regime) and face "
     "queries (quad midpoints too, as skirt.toml has them; the shirt with sleeves in shirt.toml's), at 600 vertices "
     "(the shirt with sleeves, the dress and the trousers 800). The "

@@ -70,15 +70,19 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_gr
   validate_pattern(pat);
   if (!(h > 0)) throw std::invalid_argument("pattern " + pat.name + ": grid spacing must be > 0");
   if (smooth && !on_grid)
-    throw std::invalid_argument("pattern " + pat.name + ": smoothing (Durupinar's step 7) is of an outline drawn on "
-                                "the grid: the ring mesher's outline is smooth already");
+    throw std::invalid_argument("pattern " + pat.name + ": smoothing (Durupinar's step 7) needs the outline drawn on "
+                                "the grid (garment.on_grid, --on-grid): the ring mesher's outline is smooth already");
   MeshedPattern out;
   out.spacing_cm = h;
   std::vector<PanelGrid> grids;
   std::vector<Panel> drawn(on_grid ? pat.panels.size() : 0);  // on the grid: each panel's outline as drawn there
   for (std::size_t pi = 0; pi < pat.panels.size(); ++pi)
     grids.push_back(on_grid ? grid_panel_on_grid(pat.panels[pi], h, smooth, drawn[pi]) : grid_panel(pat.panels[pi], h));
-  if (!on_grid) align_seam_vertices(pat, h, grids);  // on the grid, the vertices stay on their nodes
+  // on the grid the vertices stay on their nodes; smoothed, they have left them, and the seams' runs are aligned as
+  // the ring's are (a sleeve cap's and an armhole's staircases differ in count: a vertex left without a partner
+  // stands off the seam)
+  if (!on_grid || smooth) align_seam_vertices(pat, h, grids);
+  if (smooth) clear_slivers(pat, h, grids);
   std::vector<int> offset;
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
     const Panel& p = pat.panels[pi];

@@ -60,6 +60,17 @@ ClothMesh panel_mesh(const Panel& p, const PanelGrid& g, double h);
 // first seam to touch an edge spreads the shorter run evenly and moves the other onto it; an edge
 // already placed by an earlier seam stays fixed.
 void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& grids);
+// After alignment, each structural spring still under half a spacing (a sliver, where a millimetre of error is a
+// large strain) is lengthened: an inside vertex moves away from the outline to half a spacing (clear_of_outline); of
+// two outline vertices, the one that is no corner moves along its edge to midway between its run neighbours, where
+// that leaves both its gaps at least half a spacing (its seam partner keeps its place: the pair then sews across).
+void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids);
+// Where an inside point q nearer the outline than half a spacing h (c: its closest outline point) is moved: straight
+// away from the outline to half a spacing, where that takes it farther from the outline; else q.
+Vec2d clear_of_outline(const std::vector<Vec2d>& outline, const Vec2d& q, const Closest& c, double h);
+// An inner vertex at q at least half a spacing inside the outline: q outside it (a grid node between a staircase
+// and the outline) moves across it to half a spacing inside, q inside as clear_of_outline moves it.
+Vec2d inside_by_half(const std::vector<Vec2d>& outline, const Vec2d& q, double h);
 // Pairs two vertex runs by arc position (fraction of the edge length, so edges of different
 // length or count match): every vertex of the shorter run gets the vertex of the longer run
 // nearest in relative position (Durupinar section 2: closest vertex on the second panel); driving

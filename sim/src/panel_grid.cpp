@@ -35,22 +35,6 @@ void add_to_edges(const Panel& p, const Vec2d& q, int v, std::vector<std::vector
   }
 }
 
-// Where an inside node nearer the outline than half a spacing sits: moved straight away from the outline to half a
-// spacing from it, where that takes it farther from the outline (a strip narrower than a spacing keeps it). The
-// ring vertex snapped onto the outline beside it is then joined to it by a spring of at least half a spacing; a
-// shorter one (a sliver) takes a millimetre of error as a large strain.
-Vec2d clear_of_outline(const std::vector<Vec2d>& outline, const Vec2d& q, const Closest& c, double h) {
-  if (!(c.dist < 0.5 * h)) return q;
-  // moved off one segment it may come nearer another (a polygon's corner): moved again off that one
-  Vec2d moved = q;
-  Closest at = c;
-  for (int k = 0; k < 4 && at.dist > 0 && at.dist < (0.5 - 1e-6) * h; ++k) {
-    moved = at.point + 0.5 * h / at.dist * (moved - at.point);
-    at = closest_on_outline(outline, moved);
-  }
-  return at.dist > c.dist && inside(outline, moved) ? moved : q;  // `at` is where `moved` is
-}
-
 // The panel's grid: nodes origin + h (i, j), 0 <= i < nx, 0 <= j < ny, a node's index j nx + i.
 struct GridFrame {
   Vec2d origin;
@@ -148,6 +132,28 @@ bool spans_a_hollow(const Panel& p, const PanelGrid& g, const std::array<int, 4>
 }  // namespace
 
 namespace garment_detail {
+
+// Where an inside node nearer the outline than half a spacing sits: moved straight away from the outline to half a
+// spacing from it, where that takes it farther from the outline (a strip narrower than a spacing keeps it). The
+// ring vertex snapped onto the outline beside it is then joined to it by a spring of at least half a spacing; a
+// shorter one (a sliver) takes a millimetre of error as a large strain.
+Vec2d clear_of_outline(const std::vector<Vec2d>& outline, const Vec2d& q, const Closest& c, double h) {
+  if (!(c.dist < 0.5 * h)) return q;
+  // moved off one segment it may come nearer another (a polygon's corner): moved again off that one
+  Vec2d moved = q;
+  Closest at = c;
+  for (int k = 0; k < 4 && at.dist > 0 && at.dist < (0.5 - 1e-6) * h; ++k) {
+    moved = at.point + 0.5 * h / at.dist * (moved - at.point);
+    at = closest_on_outline(outline, moved);
+  }
+  return at.dist > c.dist && inside(outline, moved) ? moved : q;  // `at` is where `moved` is
+}
+
+Vec2d inside_by_half(const std::vector<Vec2d>& outline, const Vec2d& q, double h) {
+  const Closest c = closest_on_outline(outline, q);
+  if (inside(outline, q) || !(c.dist > 0)) return clear_of_outline(outline, q, c, h);
+  return c.point + 0.5 * h / c.dist * (c.point - q);
+}
 
 namespace {
 
@@ -312,13 +318,8 @@ void smooth_outline(const Panel& p, double h, PanelGrid& g) {
   const std::size_t n = g.uv.size();
   std::vector<Vec2d> from = g.uv, to = g.uv;
   std::vector<double> share(n, 1);
-  for (std::size_t v = 0; v < n; ++v) {
-    const Closest c = closest_on_outline(p.outline, from[v]);
-    const bool out = !inside(p.outline, from[v]) && c.dist > 0;
-    to[v] = g.boundary[v] ? c.point
-            : out         ? c.point + 0.5 * h / c.dist * (c.point - from[v])
-                          : clear_of_outline(p.outline, from[v], c, h);
-  }
+  for (std::size_t v = 0; v < n; ++v)
+    to[v] = g.boundary[v] ? closest_on_outline(p.outline, from[v]).point : inside_by_half(p.outline, from[v], h);
   const auto at = [&](int v) {
     const auto k = static_cast<std::size_t>(v);
     return from[k] + share[k] * (to[k] - from[k]);

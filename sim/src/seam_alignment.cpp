@@ -364,6 +364,58 @@ double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::
   const double lb = edge_length_cm(pat.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b);
   return std::abs(ta - (s.reversed ? 1 - tb : tb)) * 0.5 * (la + lb);
 }
+void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) {
+  for (std::size_t pi = 0; pi < grids.size(); ++pi) {
+    const Panel& p = pat.panels[pi];
+    PanelGrid& g = grids[pi];
+    const auto at = [&](int v) -> Vec2d& { return g.uv[static_cast<std::size_t>(v)]; };
+    for (int e = 0; e < p.edge_count(); ++e) {
+      auto& run = g.edge_vertices[static_cast<std::size_t>(e)];
+      auto full = run_to_corners(p, e, g);
+      for (std::size_t k = 1; k + 1 < full.size(); ++k) {
+        const int v = full[k].second;
+        const Vec2d& a = at(full[k - 1].second);
+        const Vec2d& c = at(full[k + 1].second);
+        if (!((at(v) - a).norm() < 0.5 * h || (c - at(v)).norm() < 0.5 * h) || on_several_edges(g, v)) continue;
+        const double t = 0.5 * (full[k - 1].first + full[k + 1].first);
+        const Vec2d q = point_on_edge(p, e, t);
+        if ((q - a).norm() < 0.5 * h || (c - q).norm() < 0.5 * h) continue;
+        at(v) = q;
+        full[k].first = t;
+        for (auto& tv : run)
+          if (tv.second == v) tv.first = t;
+      }
+    }
+    // an inside vertex moved clear may come near the next one in, which then moves on along their spring: a few
+    // rounds
+    bool moved = true;
+    for (int round = 0; moved && round < 8; ++round) {
+      moved = false;
+      for (std::size_t s = 0; s < g.springs.size(); ++s) {
+        const auto [a, b] = g.springs[s];
+        const Vec2d d = at(b) - at(a);
+        if (g.kinds[s] != SpringKind::kStructural || !(d.norm() < 0.5 * h)) continue;
+        const bool outline_a = g.boundary[static_cast<std::size_t>(a)], outline_b = g.boundary[static_cast<std::size_t>(b)];
+        if (outline_a && outline_b) continue;
+        Vec2d to;
+        int v;
+        if (outline_a != outline_b) {
+          v = outline_a ? b : a;
+          to = inside_by_half(p.outline, at(v), h);
+        } else {  // the one farther from the outline gives way
+          const bool b_deeper =
+              closest_on_outline(p.outline, at(b)).dist >= closest_on_outline(p.outline, at(a)).dist;
+          v = b_deeper ? b : a;
+          const Vec2d from = at(b_deeper ? a : b);
+          to = d.norm() > 0 ? Vec2d(from + 0.5 * h * (at(v) - from) / (at(v) - from).norm()) : at(v);
+        }
+        moved = moved || to != at(v);
+        at(v) = to;
+      }
+    }
+  }
+}
+
 }  // namespace garment_detail
 
 }  // namespace clothbench

@@ -312,13 +312,14 @@ TEST(Garment, OnTheGridEveryVertexIsAGridNodeAndMirroredSeamsPairUp) {
 }
 
 // Durupinar's step 7 (MeshingOptions::smooth): the drawn outline's vertices moved onto the outline, as far as keeps
-// every structural spring at least half a spacing long; the seams pair as drawn
+// every structural spring at least half a spacing long; the seams' runs aligned, every vertex paired at its partner's
+// arc fraction
 TEST(Garment, SmoothedOnTheGridTheOutlineIsFollowedWithoutSlivers) {
   const Pattern pat = slanted_pair();
   for (const double h : {1.7, 2.9, 4.3}) {
     const MeshedPattern drawn = mesh_pattern(pat, h, true, true), smooth = mesh_pattern(pat, h, true, true, true);
-    ASSERT_EQ(smooth.mesh.vertex_count(), drawn.mesh.vertex_count());
-    EXPECT_EQ(slivers(smooth).total(), 0) << "spacing " << h;
+    ASSERT_GE(smooth.mesh.vertex_count(), drawn.mesh.vertex_count());
+    EXPECT_EQ(slivers(smooth).total(), 0) << "spacing " << h << ": along " << slivers(smooth).along << ", inward " << slivers(smooth).inward;
     for (Eigen::Index s = 0; s < smooth.mesh.springs.cols(); ++s) {
       if (smooth.mesh.kind[static_cast<std::size_t>(s)] != SpringKind::kStructural) continue;
       EXPECT_GE(100 * smooth.mesh.rest_length[s], 0.5 * h - 1e-4) << "spring " << s << ", spacing " << h;
@@ -336,8 +337,9 @@ TEST(Garment, SmoothedOnTheGridTheOutlineIsFollowedWithoutSlivers) {
                 h, on, boundary, after, before);
     EXPECT_GE(on, boundary * 3 / 4) << "spacing " << h;
     EXPECT_LT(after, 0.75 * h) << "spacing " << h;  // drawn: up to a column and a half outward
-    EXPECT_EQ(smooth.seam_pair_count, drawn.seam_pair_count);
+    EXPECT_EQ(smooth.seam_pair_count[0], smooth.seam_pair_count[1]);
     for (int loose : smooth.seam_loose_count) EXPECT_EQ(loose, 0) << "spacing " << h;
+    for (double offset : smooth.seam_offset_cm) EXPECT_LT(offset, 1e-9) << "spacing " << h;
   }
   EXPECT_THROW(mesh_pattern(pat, 2.0, true, false, true), std::invalid_argument);  // the ring is smooth already
 }

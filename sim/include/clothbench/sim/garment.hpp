@@ -65,9 +65,11 @@ struct MeshingOptions {
   /// snapped to grid nodes and filled 4-neighbour, every vertex a grid node (no spring under a spacing, the outline
   /// jagged by up to half a spacing), seams paired as drawn; false: the ring snapped onto the outline (mesh_pattern)
   bool on_grid = false;
-  /// On the grid: Durupinar's optional step 7, the jagged outline made smooth. Each outline node moves to its
+  /// On the grid: Durupinar's optional step 7, the jagged outline made smooth. Each outline vertex moves to its
   /// closest point on the panel's outline, or as far towards it as keeps every structural spring at it at least half
-  /// a spacing long and every cell at it turning the way it did (mesh_pattern)
+  /// a spacing long and every cell at it turning the way it did; then, the vertices off their nodes, the seams' runs
+  /// are aligned as the ring mesher's are (every seam vertex paired) and any spring left under half a spacing is
+  /// lengthened (mesh_pattern)
   bool smooth = false;
 };
 
