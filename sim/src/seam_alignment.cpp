@@ -371,6 +371,15 @@ void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) 
     const auto at = [&](int v) -> Vec2d& { return g.uv[static_cast<std::size_t>(v)]; };
     for (int e = 0; e < p.edge_count(); ++e) {
       auto& run = g.edge_vertices[static_cast<std::size_t>(e)];
+      // an edge no seam placed keeps its vertices where the caller left them, maybe crowded: spread evenly first
+      const bool sewn = std::any_of(pat.seams.begin(), pat.seams.end(), [&](const Seam& s) {
+        return (s.panel_a == static_cast<int>(pi) && s.edge_a == e) ||
+               (s.panel_b == static_cast<int>(pi) && s.edge_b == e);
+      });
+      if (!sewn && !run.empty()) {
+        respace_run(run, {});
+        place_run(p, e, g);
+      }
       auto full = run_to_corners(p, e, g);
       for (std::size_t k = 1; k + 1 < full.size(); ++k) {
         const int v = full[k].second;
@@ -395,7 +404,8 @@ void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) 
         const auto [a, b] = g.springs[s];
         const Vec2d d = at(b) - at(a);
         if (g.kinds[s] != SpringKind::kStructural || !(d.norm() < 0.5 * h)) continue;
-        const bool outline_a = g.boundary[static_cast<std::size_t>(a)], outline_b = g.boundary[static_cast<std::size_t>(b)];
+        const bool outline_a = g.boundary[static_cast<std::size_t>(a)],
+                   outline_b = g.boundary[static_cast<std::size_t>(b)];
         if (outline_a && outline_b) continue;
         Vec2d to;
         int v;
@@ -403,8 +413,7 @@ void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) 
           v = outline_a ? b : a;
           to = inside_by_half(p.outline, at(v), h);
         } else {  // the one farther from the outline gives way
-          const bool b_deeper =
-              closest_on_outline(p.outline, at(b)).dist >= closest_on_outline(p.outline, at(a)).dist;
+          const bool b_deeper = closest_on_outline(p.outline, at(b)).dist >= closest_on_outline(p.outline, at(a)).dist;
           v = b_deeper ? b : a;
           const Vec2d from = at(b_deeper ? a : b);
           to = d.norm() > 0 ? Vec2d(from + 0.5 * h * (at(v) - from) / (at(v) - from).norm()) : at(v);

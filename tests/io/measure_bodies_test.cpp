@@ -141,6 +141,23 @@ TEST(Draft, AShirtAndADressHaveTheChestAndHipGirthsPlusTheEase) {
   EXPECT_EQ(types, (std::vector<std::string>{"skirt", "shirt", "shirt_sleeves", "dress", "trousers"}));
 }
 
+// Durupinar's construction with her step 7 (garment.smooth) on every drafted type, the smallest and the largest size:
+// no structural spring under half a spacing, every seam vertex paired (a sleeve cap's and its armhole's staircases
+// differ in count; a vertex without a partner stood 17-19 mm off the seam), the pairs at matching arc fractions
+TEST(Draft, SmoothedOnTheGridEveryDraftIsWithoutSliversAndEverySeamVertexIsPaired) {
+  if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const BodyFrame rest = load_body("debian:human").rest();
+  const BodyMeasurements m = measure_body(rest);
+  for (const std::string& type : draft_types())
+    for (const double ease : {size_ease_cm("S"), size_ease_cm("XL")}) {
+      const MeshedPattern mesh =
+          mesh_pattern(draft_garment(type, rest, m, ease), MeshingOptions{0, 700, true, true, true});
+      EXPECT_EQ(slivers(mesh).total(), 0) << type << ", ease " << ease;
+      for (int loose : mesh.seam_loose_count) EXPECT_EQ(loose, 0) << type << ", ease " << ease;
+      for (double offset : mesh.seam_offset_cm) EXPECT_LT(offset, 0.5 * mesh.spacing_cm) << type << ", ease " << ease;
+    }
+}
+
 // a shirt with sleeves drafted from Debian's human: the sleeveless shirt's front and back, and a sleeve per arm as
 // wide as the upper arm's girth plus the ease, its cap's two edges as long as the armholes they are sewn to, sewn to
 // itself under the arm; the right sleeve mirrors the left, and each is tilted down and out as its arm is
