@@ -309,11 +309,11 @@ void fill_inside(const GridFrame& f, PanelGrid& g, std::vector<int>& id) {
 
 // Durupinar's step 7, the jagged outline made smooth (she fits Bezier curves to it; here the drafted outline itself
 // is the smooth curve): each outline vertex moves to its closest point on the outline, and a vertex within the
-// staircase but outside the outline, or inside it nearer than half a spacing, to half a spacing inside it (as the
-// ring mesher's, clear_of_outline);
-// where a move would make a structural spring shorter than half a spacing (a sliver, which takes a millimetre of
-// error as a large strain) or turn a cell over, its vertices go three quarters, a half or a quarter of the way, or
-// stay. Every vertex is judged against its neighbours' moves of the same round, so mirrored panels move alike.
+// staircase but outside the outline, or inside it nearer than half a spacing, to half a spacing inside it
+// (inside_by_half). Where a move would make a structural spring shorter than half a spacing (a sliver, which takes a
+// millimetre of error as a large strain) or turn a cell over, its vertices go three quarters, a half or a quarter of
+// the way, or stay. Every vertex is judged against its neighbours' moves of the same round, so mirrored panels move
+// alike.
 void smooth_outline(const Panel& p, double h, PanelGrid& g) {
   const std::size_t n = g.uv.size();
   std::vector<Vec2d> from = g.uv, to = g.uv;
@@ -324,11 +324,6 @@ void smooth_outline(const Panel& p, double h, PanelGrid& g) {
     const auto k = static_cast<std::size_t>(v);
     return from[k] + share[k] * (to[k] - from[k]);
   };
-  const auto area = [](const std::array<Vec2d, 4>& q) {
-    double a = 0;
-    for (std::size_t k = 0; k < 4; ++k) a += cross(q[k], q[(k + 1) % 4]);
-    return a;
-  };
   for (bool cut = true; cut;) {
     cut = false;
     std::vector<std::uint8_t> short_of(n, 0);
@@ -338,10 +333,10 @@ void smooth_outline(const Panel& p, double h, PanelGrid& g) {
         short_of[static_cast<std::size_t>(a)] = short_of[static_cast<std::size_t>(b)] = 1;
     }
     for (const auto& q : g.quads) {
-      std::array<Vec2d, 4> before, after;
+      std::vector<Vec2d> before(4), after(4);
       for (std::size_t k = 0; k < 4; ++k)
         before[k] = from[static_cast<std::size_t>(q[k])], after[k] = at(q[k]);
-      if (area(before) * area(after) > 0) continue;
+      if (twice_signed_area(before) * twice_signed_area(after) > 0) continue;
       for (const int v : q) short_of[static_cast<std::size_t>(v)] = 1;
     }
     for (std::size_t v = 0; v < n; ++v)

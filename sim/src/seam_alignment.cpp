@@ -364,6 +364,7 @@ double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::
   const double lb = edge_length_cm(pat.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b);
   return std::abs(ta - (s.reversed ? 1 - tb : tb)) * 0.5 * (la + lb);
 }
+
 void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) {
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
     const Panel& p = pat.panels[pi];
