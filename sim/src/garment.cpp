@@ -80,9 +80,11 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_gr
     grids.push_back(on_grid ? grid_panel_on_grid(pat.panels[pi], h, smooth, drawn[pi]) : grid_panel(pat.panels[pi], h));
   // on the grid the vertices stay on their nodes; smoothed, they have left them, and the seams' runs are aligned as
   // the ring's are (a sleeve cap's and an armhole's staircases differ in count: a vertex left without a partner
-  // stands off the seam)
-  if (!on_grid || smooth) align_seam_vertices(pat, h, grids);
-  if (smooth) clear_slivers(pat, h, grids);
+  // stands off the seam); then no structural spring is left under half a spacing where a vertex can move
+  if (!on_grid || smooth) {
+    align_seam_vertices(pat, h, grids);
+    clear_slivers(pat, h, grids);
+  }
   std::vector<int> offset;
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
     const Panel& p = pat.panels[pi];

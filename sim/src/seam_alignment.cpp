@@ -1,6 +1,7 @@
 // Seam alignment of garment meshing: sewn edges get their boundary vertices at matching arc fractions,
 // seam ends snapped onto corners, and the runs of two edges paired (Durupinar section 2).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -260,6 +261,85 @@ void spread_crowded_runs(const Pattern& pat, double h, std::vector<PanelGrid>& g
   }
 }
 
+// Each vertex of `run` takes its fraction in `from` (the run respaced with the vertices that bound it).
+void take_fractions(std::vector<std::pair<double, int>>& run, const std::vector<std::pair<double, int>>& from) {
+  for (auto& tv : run)
+    for (const auto& [t, v] : from)
+      if (v == tv.second) tv.first = t;
+}
+
+// A seam whose edge, with the vertices on its corners, is crowded (a later seam's end moved onto a corner beside this
+// edge's free end, half a step from it) spreads both its runs evenly between their corner vertices; where that is
+// still crowded, the free ends go onto their free corners. Only where the two runs match vertex for vertex, corners
+// included: both then spread alike and their pairs still join the same pattern points.
+void spread_crowded_seam(const Pattern& pat, const Seam& s, double h, std::vector<PanelGrid>& grids) {
+  const auto panel = [&](int k) -> const Panel& {
+    return pat.panels[static_cast<std::size_t>(k ? s.panel_b : s.panel_a)];
+  };
+  const auto grid = [&](int k) -> PanelGrid& { return grids[static_cast<std::size_t>(k ? s.panel_b : s.panel_a)]; };
+  const auto edge = [&](int k) { return k ? s.edge_b : s.edge_a; };
+  const auto run = [&](int k) -> auto& { return grid(k).edge_vertices[static_cast<std::size_t>(edge(k))]; };
+  if (&run(0) == &run(1) || run(0).empty() || run(0).size() != run(1).size()) return;
+  const auto sewn_once = [&](int k) {
+    return std::count_if(pat.seams.begin(), pat.seams.end(), [&](const Seam& o) {
+             const int p = k ? s.panel_b : s.panel_a;
+             return (o.panel_a == p && o.edge_a == edge(k)) || (o.panel_b == p && o.edge_b == edge(k));
+           }) == 1;
+  };
+  if (!sewn_once(0) || !sewn_once(1)) return;  // an edge of several seams stays as they placed it
+  std::array<std::vector<std::pair<double, int>>, 2> f{run_to_corners(panel(0), edge(0), grid(0)),
+                                                       run_to_corners(panel(1), edge(1), grid(1))};
+  const auto is_crowded = [&](int k) { return crowded(panel(k), edge(k), f[static_cast<std::size_t>(k)], h); };
+  if (f[0].size() != f[1].size() || !(is_crowded(0) || is_crowded(1))) return;
+  // end `end` (0 front, 1 back) of side k's full run: side 1's ends are side 0's, swapped on a reversed seam
+  const auto end_of = [&](int k, int end) -> auto& {
+    auto& r = f[static_cast<std::size_t>(k)];
+    return (k && s.reversed ? 1 - end : end) ? r.back() : r.front();
+  };
+  const auto corner_of = [&](int k, int end) { return (k && s.reversed ? 1 - end : end) ? 1.0 : 0.0; };
+  for (int end : {0, 1})
+    if (is_corner(end_of(0, end).first) != is_corner(end_of(1, end).first)) return;
+  for (auto& r : f) respace_run(r, {});
+  if (is_crowded(0) || is_crowded(1)) {  // still: the free ends go onto their corners where both are free
+    for (int end : {0, 1}) {
+      const auto free_corner = [&](int k) {
+        return !is_corner(end_of(k, end).first) &&
+               !occupied(grid(k), point_on_edge(panel(k), edge(k), corner_of(k, end)));
+      };
+      if (free_corner(0) && free_corner(1))
+        for (int k : {0, 1}) end_of(k, end).first = corner_of(k, end);
+    }
+    for (auto& r : f) respace_run(r, {});
+  }
+  for (int k : {0, 1}) {
+    take_fractions(run(k), f[static_cast<std::size_t>(k)]);
+    place_run(panel(k), edge(k), grid(k));
+  }
+}
+
+// How far vertex v of edge e of panel pi, were it at fraction t, would sit from its seam partners along the seam [cm]
+// (0 on an edge no seam sews).
+double offset_from_partner(const Pattern& pat, const std::vector<PanelGrid>& grids, int pi, int e, int v, double t) {
+  double most = 0;
+  for (const auto& s : pat.seams) {
+    const bool on_a = s.panel_a == pi && s.edge_a == e, on_b = s.panel_b == pi && s.edge_b == e;
+    if (!on_a && !on_b) continue;
+    const auto& own = grids[static_cast<std::size_t>(pi)].edge_vertices[static_cast<std::size_t>(e)];
+    const int other_panel = on_a ? s.panel_b : s.panel_a, other_edge = on_a ? s.edge_b : s.edge_a;
+    const auto& other =
+        grids[static_cast<std::size_t>(other_panel)].edge_vertices[static_cast<std::size_t>(other_edge)];
+    for (const auto& pr : match_runs(on_a ? own : other, on_a ? other : own, s.reversed)) {
+      if (pr[on_a ? 0 : 1] != v) continue;
+      const int u = pr[on_a ? 1 : 0];
+      for (const auto& [tu, w] : other)
+        if (w == u)
+          most = std::max(most, std::abs(t - (s.reversed ? 1 - tu : tu)) *
+                                    edge_length_cm(pat.panels[static_cast<std::size_t>(pi)], e));
+    }
+  }
+  return most;
+}
+
 }  // namespace
 
 double edge_length_cm(const Panel& p, int e) {
@@ -366,6 +446,7 @@ double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::
 }
 
 void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) {
+  for (const auto& s : pat.seams) spread_crowded_seam(pat, s, h, grids);
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
     const Panel& p = pat.panels[pi];
     PanelGrid& g = grids[pi];
@@ -377,8 +458,10 @@ void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) 
         return (s.panel_a == static_cast<int>(pi) && s.edge_a == e) ||
                (s.panel_b == static_cast<int>(pi) && s.edge_b == e);
       });
-      if (!sewn && !run.empty()) {
-        respace_run(run, {});
+      if (!sewn && !run.empty()) {  // between the vertices that bound it on the outline, whichever edge holds them
+        auto spread = bracketing_run(p, e, g);
+        respace_run(spread, {});
+        take_fractions(run, spread);
         place_run(p, e, g);
       }
       auto full = run_to_corners(p, e, g);
@@ -390,6 +473,11 @@ void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) 
         const double t = 0.5 * (full[k - 1].first + full[k + 1].first);
         const Vec2d q = point_on_edge(p, e, t);
         if ((q - a).norm() < 0.5 * h || (c - q).norm() < 0.5 * h) continue;
+        // a sewn vertex stays within a quarter spacing of its partner along the seam, or no farther than it was
+        const auto offset = [&](double at_t) {
+          return offset_from_partner(pat, grids, static_cast<int>(pi), e, v, at_t);
+        };
+        if (sewn && offset(t) > std::max(0.25 * h, offset(full[k].first))) continue;
         at(v) = q;
         full[k].first = t;
         for (auto& tv : run)
