@@ -83,7 +83,7 @@ MeshedPattern mesh_pattern(const Pattern& pat, double h, bool attach, bool on_gr
   // stands off the seam); then no structural spring is left under half a spacing where a vertex can move
   if (!on_grid || smooth) {
     align_seam_vertices(pat, h, grids);
-    clear_slivers(pat, h, grids);
+    clear_slivers(pat, h, grids, smooth);
   }
   std::vector<int> offset;
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {

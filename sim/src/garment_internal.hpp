@@ -63,12 +63,13 @@ void align_seam_vertices(const Pattern& pat, double h, std::vector<PanelGrid>& g
 // After alignment, each structural spring still under half a spacing (a sliver, where a millimetre of error is a
 // large strain) is lengthened. A seam whose runs are crowded between the vertices on their corners (a later seam's end
 // moved onto a corner beside one) spreads both runs alike. An edge no seam placed is spread evenly between the
-// vertices that bound it on the outline first (its vertices may lie where an earlier step left them, crowded). Of two
-// outline vertices, the one that is no corner moves along its edge to midway between its run neighbours, where that
+// vertices that bound it on the outline first: where two of them stand closer than half a spacing, or every such edge
+// with `spread_every_open_edge` (smoothing leaves their arc fractions stale, their vertices crowded near corners). Of
+// two outline vertices, the one that is no corner moves along its edge to midway between its run neighbours, where that
 // leaves both its gaps at least half a spacing (its seam partner keeps its place: the pair then sews across, at most a
 // quarter spacing apart or no farther than before); an inside vertex moves away from the outline to half a spacing
 // (inside_by_half), and the next one in along their spring if it then comes too near.
-void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids);
+void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids, bool spread_every_open_edge);
 // Where an inside point q nearer the outline than half a spacing h (c: its closest outline point) is moved: straight
 // away from the outline to half a spacing, where that takes it farther from the outline; else q.
 Vec2d clear_of_outline(const std::vector<Vec2d>& outline, const Vec2d& q, const Closest& c, double h);

@@ -261,6 +261,15 @@ void spread_crowded_runs(const Pattern& pat, double h, std::vector<PanelGrid>& g
   }
 }
 
+// Whether two neighbours of a run stand closer than half a spacing h, where they are.
+bool crowded_in_place(const PanelGrid& g, const std::vector<std::pair<double, int>>& run, double h) {
+  for (std::size_t k = 1; k < run.size(); ++k)
+    if ((g.uv[static_cast<std::size_t>(run[k].second)] - g.uv[static_cast<std::size_t>(run[k - 1].second)]).norm() <
+        0.5 * h)
+      return true;
+  return false;
+}
+
 // Each vertex of `run` takes its fraction in `from` (the run respaced with the vertices that bound it).
 void take_fractions(std::vector<std::pair<double, int>>& run, const std::vector<std::pair<double, int>>& from) {
   for (auto& tv : run)
@@ -445,7 +454,7 @@ double pair_offset_cm(const Pattern& pat, const Seam& s, const std::vector<std::
   return std::abs(ta - (s.reversed ? 1 - tb : tb)) * 0.5 * (la + lb);
 }
 
-void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) {
+void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids, bool spread_every_open_edge) {
   for (const auto& s : pat.seams) spread_crowded_seam(pat, s, h, grids);
   for (std::size_t pi = 0; pi < grids.size(); ++pi) {
     const Panel& p = pat.panels[pi];
@@ -453,13 +462,13 @@ void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids) 
     const auto at = [&](int v) -> Vec2d& { return g.uv[static_cast<std::size_t>(v)]; };
     for (int e = 0; e < p.edge_count(); ++e) {
       auto& run = g.edge_vertices[static_cast<std::size_t>(e)];
-      // an edge no seam placed keeps its vertices where the caller left them, maybe crowded: spread evenly first
       const bool sewn = std::any_of(pat.seams.begin(), pat.seams.end(), [&](const Seam& s) {
         return (s.panel_a == static_cast<int>(pi) && s.edge_a == e) ||
                (s.panel_b == static_cast<int>(pi) && s.edge_b == e);
       });
-      if (!sewn && !run.empty()) {  // between the vertices that bound it on the outline, whichever edge holds them
-        auto spread = bracketing_run(p, e, g);
+      // an edge no seam placed spreads between the vertices that bound it on the outline, whichever edge holds them
+      if (auto spread = bracketing_run(p, e, g);
+          !sewn && !run.empty() && (spread_every_open_edge || crowded_in_place(g, spread, h))) {
         respace_run(spread, {});
         take_fractions(run, spread);
         place_run(p, e, g);
