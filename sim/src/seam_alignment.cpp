@@ -261,6 +261,13 @@ void spread_crowded_runs(const Pattern& pat, double h, std::vector<PanelGrid>& g
   }
 }
 
+// How many seams sew edge e of panel pi.
+long seams_sewing(const Pattern& pat, int pi, int e) {
+  return std::count_if(pat.seams.begin(), pat.seams.end(), [&](const Seam& s) {
+    return (s.panel_a == pi && s.edge_a == e) || (s.panel_b == pi && s.edge_b == e);
+  });
+}
+
 // Whether two neighbours of a run stand closer than half a spacing h, where they are.
 bool crowded_in_place(const PanelGrid& g, const std::vector<std::pair<double, int>>& run, double h) {
   for (std::size_t k = 1; k < run.size(); ++k)
@@ -289,13 +296,8 @@ void spread_crowded_seam(const Pattern& pat, const Seam& s, double h, std::vecto
   const auto edge = [&](int k) { return k ? s.edge_b : s.edge_a; };
   const auto run = [&](int k) -> auto& { return grid(k).edge_vertices[static_cast<std::size_t>(edge(k))]; };
   if (&run(0) == &run(1) || run(0).empty() || run(0).size() != run(1).size()) return;
-  const auto sewn_once = [&](int k) {
-    return std::count_if(pat.seams.begin(), pat.seams.end(), [&](const Seam& o) {
-             const int p = k ? s.panel_b : s.panel_a;
-             return (o.panel_a == p && o.edge_a == edge(k)) || (o.panel_b == p && o.edge_b == edge(k));
-           }) == 1;
-  };
-  if (!sewn_once(0) || !sewn_once(1)) return;  // an edge of several seams stays as they placed it
+  // an edge of several seams stays as they placed it
+  if (seams_sewing(pat, s.panel_a, s.edge_a) != 1 || seams_sewing(pat, s.panel_b, s.edge_b) != 1) return;
   std::array<std::vector<std::pair<double, int>>, 2> f{run_to_corners(panel(0), edge(0), grid(0)),
                                                        run_to_corners(panel(1), edge(1), grid(1))};
   const auto is_crowded = [&](int k) { return crowded(panel(k), edge(k), f[static_cast<std::size_t>(k)], h); };
@@ -462,16 +464,14 @@ void clear_slivers(const Pattern& pat, double h, std::vector<PanelGrid>& grids, 
     const auto at = [&](int v) -> Vec2d& { return g.uv[static_cast<std::size_t>(v)]; };
     for (int e = 0; e < p.edge_count(); ++e) {
       auto& run = g.edge_vertices[static_cast<std::size_t>(e)];
-      const bool sewn = std::any_of(pat.seams.begin(), pat.seams.end(), [&](const Seam& s) {
-        return (s.panel_a == static_cast<int>(pi) && s.edge_a == e) ||
-               (s.panel_b == static_cast<int>(pi) && s.edge_b == e);
-      });
+      const bool sewn = seams_sewing(pat, static_cast<int>(pi), e) > 0;
       // an edge no seam placed spreads between the vertices that bound it on the outline, whichever edge holds them
-      if (auto spread = bracketing_run(p, e, g);
-          !sewn && !run.empty() && (spread_every_open_edge || crowded_in_place(g, spread, h))) {
-        respace_run(spread, {});
-        take_fractions(run, spread);
-        place_run(p, e, g);
+      if (!sewn && !run.empty()) {
+        if (auto spread = bracketing_run(p, e, g); spread_every_open_edge || crowded_in_place(g, spread, h)) {
+          respace_run(spread, {});
+          take_fractions(run, spread);
+          place_run(p, e, g);
+        }
       }
       auto full = run_to_corners(p, e, g);
       for (std::size_t k = 1; k + 1 < full.size(); ++k) {
