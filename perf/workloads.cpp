@@ -143,7 +143,7 @@ RegionTimes map_render() {
   return t;
 }
 
-// (e) a short dressing run end to end (run_scene: meshing, maps, sew, attach, drape, the oracle's accuracy);
+// (e) a short dressing run end to end (run_scene: meshing, maps, sew, drape with its attachments, the oracle's accuracy);
 // measure.py leaves load_body out of the count (Workload::uncounted)
 RegionTimes dressing_short() {
   const Scene scene =

@@ -1,6 +1,6 @@
 #pragma once
-// The dressing phases of a run (bench/src only): sew (seam forces, no gravity), attach, drape (gravity) until
-// settled.
+// The dressing phases of a run (bench/src only): sew (seam forces, no gravity), drape (gravity) until settled, the
+// attachments bound once it has begun.
 #include "clothbench/bench/runner.hpp"
 #include "run_context.hpp"
 
@@ -10,12 +10,9 @@ namespace clothbench::runner_detail {
 // time; nothing without seams or with stop.sew off. With options.trace every iteration's wall time is kept
 void sew(const RunContext& run, RunResult& r);
 
-// attachments (Durupinar 3.2) bind where sewing left the waistband, before gravity comes on; warns of attached
-// vertices bound far from the body
-void attach(const RunContext& run);
-
 // drape until the RMS cloth speed stays below stop.settle_speed for stop.settle_window_s (r.drape), at most
-// stop.drape_max_s of simulated time
+// stop.drape_max_s of simulated time; the attachments (Durupinar 3.2) bind after its first iteration, those that
+// sewing brought to the body
 void drape(const RunContext& run, RunResult& r);
 
 }  // namespace clothbench::runner_detail

@@ -266,7 +266,7 @@ void wear_next_layer(const RunContext& run, Rig& rig, ClothMesh next, RunResult&
   rig.sim->set_layers_under(&*rig.under_skin, under, tol / 2);
 }
 
-// sew -> attach -> drape for each layer of garments (the next worn over the dressed ones, then all of them sewn and
+// sew -> drape (attach) for each layer of garments (the next worn over the dressed ones, then all of them sewn and
 // draped together) -> animate, the ETA planned over what is left; a diverged simulation stops there
 void run_phases(const RunContext& run, Rig& rig, std::vector<ClothMesh>& layers, const Budget& budget, RunResult& r) {
   bool sewn = true, settled = true;  // every layer
@@ -275,7 +275,6 @@ void run_phases(const RunContext& run, Rig& rig, std::vector<ClothMesh>& layers,
     RunResult layer;
     run.progress.plan(budget.total());
     sew(run, layer);
-    attach(run);
     run.progress.plan(budget.drape + budget.animate);
     if (!run.sim.divergence()) drape(run, layer);
     if (k == 0)

@@ -17,9 +17,8 @@ constexpr double kHemFlare = 1.2;
 constexpr double kHemAboveKnee = 0.06;
 // how far the wrapped panels start outside the hip section on each side [cm]
 constexpr double kClearanceCm = 3;
-// the waistband's ease [cm], whatever the size: sewing closes it round the waist, where it holds the skirt up. With
-// a size's ease it hangs centimetres off the body, and attached there it held the side seam's springs stretched past
-// the strain limit
+// the waistband's ease [cm], whatever the size: sewing closes it round the waist, where it is bound to the body. With
+// a size's ease it hangs centimetres off the body
 constexpr double kWaistEaseCm = 2;
 // the trousers' waistband's ease [cm]: four panels wrapped round the legs, not round the hip as the skirt's two, come
 // to the waist from farther off (with 2 cm, the walking body's left the side seams 3.4 mm open at the waist)
@@ -145,6 +144,13 @@ int edge_named(const Panel& panel, const std::string& name) {
   return static_cast<int>(std::find(panel.edge_names.begin(), panel.edge_names.end(), name) - panel.edge_names.begin());
 }
 
+// every panel's waist bound to the body once dressed (Durupinar 3.2, as garments/skirt.pattern and trousers.pattern
+// have it): a waistband held by friction alone slid down the hip for as long as the drape ran, so that the fit at
+// the hip told how long that was rather than the size
+void attach_waist(Pattern& p) {
+  for (Panel& q : p.panels) q.attached_edges.push_back(edge_named(q, "waist"));
+}
+
 // sews edge `ea` of panel a to edge `eb` of panel b, one against the other (the drafts' panels mirror each other),
 // where panel a has that edge
 void sew(Pattern& p, int a, const std::string& ea, int b, const std::string& eb) {
@@ -178,7 +184,9 @@ Pattern draft_skirt(const BodyFrame& body, const BodyMeasurements& m, double eas
   Panel front = skirt_panel("front", kHemFlare * hip_w, hip_w, waist_w, hip_y, length);
   Panel back = skirt_panel("back", kHemFlare * hip_w, hip_w, waist_w, hip_y, length);
   wrap_front_and_back(body, centre, hem_h, hip_w, hip_h, hip_h, front, back);
-  return sewn_front_and_back("skirt", std::move(front), std::move(back));
+  Pattern p = sewn_front_and_back("skirt", std::move(front), std::move(back));
+  attach_waist(p);
+  return p;
 }
 
 // a shirt (hem between the waist and the hip) or a dress (hem above the knee, flared): a front and a back panel
@@ -305,6 +313,7 @@ Pattern draft_trousers(const BodyFrame& body, const BodyMeasurements& m, double 
         180 / M_PI * std::atan((knees[static_cast<std::size_t>(side)].centroid().x() - axis.x()) / (thigh_h - knee_h));
     place_front_and_back(body, axis, hem_h, radius, tilt, p.panels[side == 0 ? 0 : 1], p.panels[side == 0 ? 2 : 3]);
   }
+  attach_waist(p);
   sew(p, 0, "outseam", 2, "outseam"), sew(p, 0, "inseam", 2, "inseam");  // the left leg
   sew(p, 1, "outseam", 3, "outseam"), sew(p, 1, "inseam", 3, "inseam");  // the right leg
   sew(p, 0, "crotch", 1, "crotch"), sew(p, 0, "fly", 1, "fly");          // the centre front

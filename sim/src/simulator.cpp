@@ -483,22 +483,26 @@ bool Simulator::check_divergence() {
   return true;
 }
 
-void Simulator::attach(const BodyFrame& body) {
-  // bind each attached vertex to its closest body triangle (Durupinar 3.2); from now on it is
-  // moved by the body only (1/m = 0), at its offset in that triangle's frame
-  attach_tri_.clear();
-  attach_bary_.resize(3, static_cast<Eigen::Index>(mesh_.attached.size()));
-  attach_local_.resize(3, attach_bary_.cols());
-  for (std::size_t i = 0; i < mesh_.attached.size(); ++i) {
-    const auto k = static_cast<Eigen::Index>(i);
-    const ClosestPoint cp = closest_point_brute(body, x_.col(mesh_.attached[i]));
-    attach_tri_.push_back(cp.triangle);
-    attach_bary_.col(k) = cp.bary;
-    const Vec3 offset = x_.col(mesh_.attached[i]) - cp.point;
-    attach_local_.col(k) = cp.triangle >= 0 ? Vec3(triangle_frame(body, cp.triangle).transpose() * offset) : offset;
-    inv_m_[mesh_.attached[i]] = 0;
-    v_.col(mesh_.attached[i]).setZero();
+int Simulator::attach(const BodyFrame& body, Real reach) {
+  // bind each attached vertex within reach to its closest body triangle (Durupinar 3.2); from now on it is moved by
+  // the body only (1/m = 0), at its offset in that triangle's frame
+  attach_vertex_.clear(), attach_tri_.clear();
+  std::vector<Vec3> bary, local;
+  for (const int i : mesh_.attached) {
+    const ClosestPoint cp = closest_point_brute(body, x_.col(i));
+    const Vec3 offset = x_.col(i) - cp.point;
+    if (!(offset.norm() <= reach)) continue;
+    attach_vertex_.push_back(i), attach_tri_.push_back(cp.triangle), bary.push_back(cp.bary);
+    local.push_back(cp.triangle >= 0 ? Vec3(triangle_frame(body, cp.triangle).transpose() * offset) : offset);
+    inv_m_[i] = 0;
+    v_.col(i).setZero();
   }
+  attach_bary_.resize(3, static_cast<Eigen::Index>(bary.size()));
+  attach_local_.resize(3, attach_bary_.cols());
+  for (std::size_t k = 0; k < bary.size(); ++k)
+    attach_bary_.col(static_cast<Eigen::Index>(k)) = bary[k],
+    attach_local_.col(static_cast<Eigen::Index>(k)) = local[k];
+  return static_cast<int>(attach_vertex_.size());
 }
 
 void Simulator::follow_attachments(const BodyFrame& body, Real time_before) {
@@ -512,8 +516,8 @@ void Simulator::follow_attachments(const BodyFrame& body, Real time_before) {
       v += attach_bary_(k, j) * body.velocities.col(bv);
     }
     // where the binding point was time_before seconds before the pose (first order)
-    col(x_, mesh_.attached[i]) = x + triangle_frame(body, attach_tri_[i]) * attach_local_.col(j) - time_before * v;
-    col(v_, mesh_.attached[i]) = v;
+    col(x_, attach_vertex_[i]) = x + triangle_frame(body, attach_tri_[i]) * attach_local_.col(j) - time_before * v;
+    col(v_, attach_vertex_[i]) = v;
   }
 }
 

@@ -23,6 +23,11 @@
 namespace clothbench {
 namespace {
 
+// the index of the panel's edge named `name` (its edge count when it has none)
+int edge_index(const Panel& panel, const std::string& name) {
+  return static_cast<int>(std::find(panel.edge_names.begin(), panel.edge_names.end(), name) - panel.edge_names.begin());
+}
+
 // the landmarks lie in the order of a standing body, and the girths in a tailor's order
 void expect_a_standing_body(const BodyMeasurements& m, const std::string& which) {
   for (const auto& x : m.all)
@@ -66,7 +71,7 @@ TEST(MeasureBodies, TheMakeHumanBodies) {
 }
 
 // a skirt drafted from Debian's human (Durupinar section 2): two panels sewn at the sides whose widths add up to the
-// hip girth plus the ease at the hip and the waist girth plus the waistband's 2 cm at the top; a body 10 % larger
+// hip girth plus the ease at the hip and the waist girth plus the waistband's 2 cm at the top, the waist attached; a body 10 % larger
 // gets panels 10 % of its girths wider; bad types and eases are refused naming what is allowed
 TEST(Draft, ASkirtHasTheBodysGirthsPlusItsEase) {
   if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
@@ -86,7 +91,8 @@ TEST(Draft, ASkirtHasTheBodysGirthsPlusItsEase) {
   const Pattern p = draft_garment("skirt", rest, m, 8);
   ASSERT_EQ(p.panels.size(), 2u);
   EXPECT_EQ(p.seams.size(), 2u);
-  for (const Panel& panel : p.panels) EXPECT_TRUE(panel.attached_edges.empty()) << panel.name;
+  for (const Panel& panel : p.panels)  // the waist, bound to the body once dressed
+    EXPECT_EQ(panel.attached_edges, std::vector<int>{edge_index(panel, "waist")}) << panel.name;
   const auto [waist, hip] = widths(p);
   EXPECT_NEAR(waist, 100 * m["waist girth"].value_m + 2, 1e-6);
   EXPECT_NEAR(hip, 100 * m["hip girth"].value_m + 8, 1e-6);
@@ -196,7 +202,7 @@ TEST(Draft, SleevesHaveTheUpperArmGirthPlusTheEaseAndCapsAsLongAsTheArmholes) {
 }
 
 // trousers drafted from Debian's human: four panels, each leg's front and back sewn at its sides, the two fronts and
-// the two backs at the centre; each panel half a leg wide below the crotch (the thigh girth plus the ease, halved)
+// the two backs at the centre, every waist attached; each panel half a leg wide below the crotch (the thigh girth plus the ease, halved)
 // and a quarter of the hip plus the ease across above it; every seam's two edges as long; the right panels mirror
 // the left ones
 TEST(Draft, TrousersHaveTheThighAndHipGirthsPlusTheEase) {
@@ -207,6 +213,8 @@ TEST(Draft, TrousersHaveTheThighAndHipGirthsPlusTheEase) {
   const Pattern p = draft_garment("trousers", rest, m, ease);
   ASSERT_EQ(p.panels.size(), 4u);
   ASSERT_EQ(p.seams.size(), 8u);
+  for (const Panel& panel : p.panels)  // every panel's waist, bound to the body once dressed
+    EXPECT_EQ(panel.attached_edges, std::vector<int>{edge_index(panel, "waist")}) << panel.name;
   for (const Seam& s : p.seams)
     EXPECT_NEAR(edge_length_cm(p.panels[static_cast<std::size_t>(s.panel_a)], s.edge_a),
                 edge_length_cm(p.panels[static_cast<std::size_t>(s.panel_b)], s.edge_b), 1e-6)

@@ -586,30 +586,53 @@ TEST(Simulator, OnePassOfTheLimitHoldsAChainFromItsSupport) {
   EXPECT_GT(strain[0], 0.2f);
 }
 
+// a sphere's centre and radius [m], and two attached points 2 mm and 40 mm off it
+const Vec3 kCentre(0, 1, 0);
+const Real kRadius = 0.1f;
+ClothMesh two_points_off_a_sphere() {
+  ClothMesh c = test::two_particles(0.05f, 0);
+  c.positions.col(0) = kCentre + Vec3(kRadius + 0.002f, 0, 0);
+  c.positions.col(1) = kCentre + Vec3(0, 0, kRadius + 0.04f);
+  c.attached = {0, 1};
+  return c;
+}
+
 TEST(Simulator, AttachedPointsTurnWithTheBody) {
   // Durupinar 3.2: two attached points, one 2 mm and one 40 mm off a sphere, bound to it; the sphere turned a
   // quarter turn about its centre and moved: each point is where the same rigid motion takes it, so the
   // cloth between them is neither stretched nor shortened (an offset that kept its direction in the world
   // would leave the far point behind and the spring 40 mm x sqrt(2) longer or shorter)
-  const Vec3 centre(0, 1, 0);
-  const Real radius = 0.1f;
-  ClothMesh c = test::two_particles(0.05f, 0);
-  c.positions.col(0) = centre + Vec3(radius + 0.002f, 0, 0);
-  c.positions.col(1) = centre + Vec3(0, 0, radius + 0.04f);
-  c.attached = {0, 1};
+  const ClothMesh c = two_points_off_a_sphere();
   Simulator sim(c, Material{}, SolverParams{});
-  const BodyFrame body = make_sphere_body(centre, radius, 16, 32);
+  const BodyFrame body = make_sphere_body(kCentre, kRadius, 16, 32);
   sim.attach(body);
   const Eigen::AngleAxis<Real> turn(Real(M_PI / 2), Vec3::UnitY());
   const Vec3 shift(0.3f, 0, 0);
   BodyFrame turned = body;
   for (int v = 0; v < body.vertex_count(); ++v)
-    turned.positions.col(v) = centre + shift + turn * (body.positions.col(v) - centre);
+    turned.positions.col(v) = kCentre + shift + turn * (body.positions.col(v) - kCentre);
   sim.follow_attachments(turned);
   for (int k = 0; k < 2; ++k) {
-    const Vec3 expected = centre + shift + turn * (c.positions.col(k) - centre);
+    const Vec3 expected = kCentre + shift + turn * (c.positions.col(k) - kCentre);
     EXPECT_LT((sim.positions().col(k) - expected).norm(), 1e-5f) << "attached point " << k;
   }
+}
+
+TEST(Simulator, AnAttachedPointBeyondReachIsLeftFree) {
+  // of two attached points, 2 mm and 40 mm off a sphere, with a reach of 10 mm only the near one is bound: it stays
+  // put under gravity while the far one falls (bound, it would hold the cloth in mid-air)
+  const ClothMesh c = two_points_off_a_sphere();
+  Material m;
+  m.k_structural = m.k_shear = m.k_flexion = 1e-6f;
+  SolverParams p;
+  p.limit = "none";
+  p.dt = 0.005f;
+  Simulator sim(c, m, p);
+  EXPECT_EQ(sim.attach(make_sphere_body(kCentre, kRadius, 16, 32), 0.01f), 1);
+  EXPECT_EQ(sim.attachment_offsets().cols(), 1);
+  for (int i = 0; i < 20; ++i) ASSERT_TRUE(sim.step());
+  EXPECT_LT((sim.positions().col(0) - c.positions.col(0)).norm(), 1e-6f);
+  EXPECT_LT(sim.positions()(1, 1), c.positions(1, 1) - 0.01f);
 }
 
 TEST(Simulator, APointInsideTheBodyIsBroughtToItsSurface) {

@@ -2,6 +2,7 @@
 /// The simulation loop of the papers: spring forces (Eq. 2), an integrator by name (explicit Euler, Eq. 3, at a
 /// time step bounded by Eq. 4; implicit Euler; rk45), super-elasticity limits (dressing 4, walking 3), seaming,
 /// and collision response from any Collider's contacts (dressing Eq. 12, walking Eq. 15-16).
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -168,15 +169,17 @@ class Simulator {
   /// One iteration (forces, the integrator's update, limits, seaming and response). Returns false once diverged.
   bool step();
 
-  /// Binds the mesh's `attached` vertices to their closest triangles of `body` (Durupinar 3.2);
-  /// until then they move freely (so sewing can first bring a waistband to the body).
-  void attach(const BodyFrame& body);
+  /// Binds the mesh's `attached` vertices within `reach` of `body` to their closest triangles (Durupinar 3.2:
+  /// "after the virtual human is dressed in the garment, the selected particles are attached to the closest
+  /// polygon"); until then they move freely (so sewing can first bring a waistband to the body). One farther off
+  /// stays free: bound, it would hold the garment in mid-air. Returns how many were bound.
+  int attach(const BodyFrame& body, Real reach = std::numeric_limits<Real>::infinity());
   /// Moves attached vertices with the body (same topology as in attach()), each held at its offset from its
   /// binding point as the triangle turns, to where they were `time_before` seconds before the body's pose (first
   /// order in the body velocity), with the body's velocity.
   void follow_attachments(const BodyFrame& body, Real time_before = 0);
-  /// Of each attached vertex, its offset from the body point it is bound to (attach()), in its triangle's frame: its
-  /// length is the distance [m] (3 x attached).
+  /// Of each bound vertex (attach()), its offset from the body point it is bound to, in its triangle's frame: its
+  /// length is the distance [m] (3 x bound).
   const Points3& attachment_offsets() const { return attach_local_; }
 
   const char* integrator() const { return integrator_->name(); }
@@ -262,9 +265,10 @@ class Simulator {
   Points3 mid_;        // quad midpoints [m] (3 x nq)
   std::vector<Contact> contacts_;
   std::vector<std::uint8_t> merged_;  // per seam pair
-  std::vector<int> attach_tri_;       // per attached vertex
-  Points3 attach_bary_;               // (3 x na)
-  Points3 attach_local_;  // attached vertex minus its binding point, in its triangle's frame [m] (3 x na)
+  std::vector<int> attach_vertex_;    // the bound vertices (attach())
+  std::vector<int> attach_tri_;       // per bound vertex
+  Points3 attach_bary_;               // (3 x nb)
+  Points3 attach_local_;  // bound vertex minus its binding point, in its triangle's frame [m] (3 x nb)
   std::vector<std::vector<int>> merged_groups_;  // vertices joined by merged pairs: one point each
   SelfContacts self_;                            // cloth against itself (SolverParams::self_contact)
   std::optional<LayersUnder> layers_;            // cloth against the layers under it (set_layers_under)
