@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "budget.hpp"
 #include "clothbench/sim/timer.hpp"
@@ -28,6 +29,27 @@ void attach(const RunContext& run) {
                  run.scene.path.c_str(), attached - bound, attached, 1e3 * double(kAttachReach));
 }
 
+// stop.settle_window_s in iterations
+long window(const Scene& scene, const Simulator& sim) {
+  return std::max(1L, static_cast<long>(std::ceil(scene.stop.settle_window_s / sim.dt())));
+}
+
+// a sewing that has stopped closing: the widest seam pair gap has not narrowed by kNarrower for `window` iterations
+// (a pair the limit holds a few millimetres apart, where a sleeve's corners meet the front's and the back's under
+// the arm, stayed so to the end of the sew phase's time); with every pair within twice solver.merge_distance, they
+// are then merged (Simulator::merge_stalled_seams)
+struct Stall {
+  static constexpr Real kNarrower = 1e-4f;  // [m]
+  long window, since = 0;
+  Real least = std::numeric_limits<Real>::infinity();
+  bool stalled(Real widest) {
+    if (widest < least - kNarrower) least = widest, since = 0;
+    if (++since <= window) return false;
+    since = 0;
+    return true;
+  }
+};
+
 // sqrt(2 E_kin / m): the cloth's RMS speed [m/s]
 Real rms_speed(const Simulator& sim) {
   const double mass = sim.masses().sum();
@@ -45,11 +67,13 @@ void sew(const RunContext& run, RunResult& r) {
   PhaseClock clock{sim};
   const long cap = iteration_cap(scene, scene.stop.sew_max_s, sim.dt());
   const Real gap = scene.stop.sewn_gap_mm * 1e-3f;
+  Stall stall{window(scene, sim)};
   for (long i = 0; i < cap && !p.reached; ++i) {
     Stopwatch iteration;
     const bool alive = sim.step();
     if (run.options.trace) r.sew_iteration_ms.push_back(float(iteration.ms()));
     if (!alive) break;
+    if (stall.stalled(sim.seam_pair_gap_max())) sim.merge_stalled_seams();
     p.reached = sim.seam_pair_gap_max() <= gap || sim.sewn_fraction() >= 1;
     run.progress.report("sew: iteration %ld, seam pairs within %.1f mm", i + 1, 1e3 * double(sim.seam_pair_gap_max()));
   }
@@ -63,8 +87,8 @@ void drape(const RunContext& run, RunResult& r) {
   sim.set_phase(Phase::kDrape);
   PhaseClock clock{sim};
   const long cap = iteration_cap(scene, scene.stop.drape_max_s, sim.dt());
-  const long window = std::max(1L, static_cast<long>(std::ceil(scene.stop.settle_window_s / sim.dt())));
-  // settled: `window` iterations in a row below the speed
+  const long settle = window(scene, sim);
+  // settled: `settle` iterations in a row below the speed
   long calm = 0;
   // the attachments bind after the first iteration: the seams' pull leaves springs stretched past the limit at the
   // end of sewing, which one step of the limit without it relaxes (bound before, a waistband's would stay so)
@@ -73,7 +97,7 @@ void drape(const RunContext& run, RunResult& r) {
     if (!sim.step()) break;
     if (!bound) attach(run), bound = true;
     calm = rms_speed(sim) < scene.stop.settle_speed ? calm + 1 : 0;
-    p.reached = calm >= window;
+    p.reached = calm >= settle;
     run.progress.report("drape: iteration %ld, RMS speed %.3f m/s", i + 1, double(rms_speed(sim)));
   }
   if (!bound && !sim.divergence()) attach(run);

@@ -275,7 +275,7 @@ bool Simulator::step() {
   limit.restart();
   limiter_->limit_positions(state);
   limit_ms += limit.ms();
-  merge_seams();
+  merge_seams(params_.merge_distance);
   cs_ms += cs.ms();
   timings_.cdr_ms += cdr_ms;
   timings_.cs_ms += cs_ms;
@@ -419,19 +419,24 @@ void Simulator::integrate_positions() {
   x_ += dt_ * v_;
 }
 
-void Simulator::merge_seams() {
-  // sewn pairs closer than merge_distance become one point (Durupinar 3.1); where seams meet (a sleeve,
+int Simulator::merge_seams(Real within) {
+  // sewn pairs closer than `within` become one point (Durupinar 3.1); where seams meet (a sleeve,
   // the front and the back at the armpit) the pairs chain, and all of the chain is that one point
-  bool grown = false;
+  int grown = 0;
   for (Eigen::Index p = 0; p < mesh_.seam_pairs.cols(); ++p) {
     auto& merged = merged_[static_cast<std::size_t>(p)];
-    if (merged || !((x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm() < params_.merge_distance))
-      continue;
+    if (merged || !((x_.col(mesh_.seam_pairs(0, p)) - x_.col(mesh_.seam_pairs(1, p))).norm() < within)) continue;
     merged = 1;
-    grown = true;
+    ++grown;
   }
   if (grown) group_merged_pairs();
   move_as_one(merged_groups_, m_, inv_m_, v_, &x_, [](int, Real) {});
+  return grown;
+}
+
+int Simulator::merge_stalled_seams() {
+  const Real within = 2 * params_.merge_distance;
+  return seam_pair_gap_max() < within ? merge_seams(within) : 0;
 }
 
 void Simulator::group_merged_pairs() {

@@ -173,6 +173,22 @@ TEST(Runner, AFittedSkirtIsDraftedFromTheBodysMeasurementsAndDressedOnIt) {
   EXPECT_NE(config_text(s).find("garment.fit = \"skirt\""), std::string::npos) << config_text(s);
 }
 
+// a sewing that stops closing: the tall MakeHuman body's drafted shirt with sleeves (size M, 800 vertices), whose
+// armpit pair, where a sleeve's corners meet the front's and the back's, the limit holds about 4 mm apart; once the
+// widest gap has not narrowed for stop.settle_window_s, every pair being within twice merge_distance, they merge, and
+// the shirt is sewn within every limit (before, that pair stayed open to the end of the sew phase's time)
+TEST(Runner, ASewingThatStopsClosingIsMerged) {
+  RunOptions quiet;
+  quiet.progress = false;
+  const Scene s = load_scene(std::string(CLOTHBENCH_SOURCE_DIR) + "/scenes/dressing/shirt.toml",
+                             {"body.file=data:body/mh_female_tall.obj", "garment.file=", "garment.fit=shirt_sleeves",
+                              "garment.size=M", "garment.vertices=800", "solver.face_queries=true"});
+  const RunResult r = run_scene(s, quiet);
+  ASSERT_FALSE(r.divergence);
+  EXPECT_TRUE(r.sew.reached);
+  EXPECT_TRUE(limit_misses(r).empty()) << limits_cell(r);
+}
+
 // an outfit (scenes/dressing/outfit.toml): a dress worn over a shirt with sleeves, the shirt dressed first and the
 // dress placed clear of it (garment.layer), the cloth against itself answered twice a step (self_contact_last). Both
 // garments are sewn and draped within every body limit, with at most 1 % of the structural springs through the

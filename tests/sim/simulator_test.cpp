@@ -635,6 +635,29 @@ TEST(Simulator, AnAttachedPointBeyondReachIsLeftFree) {
   EXPECT_LT(sim.positions()(1, 1), c.positions(1, 1) - 0.01f);
 }
 
+TEST(Simulator, AStalledSewingMergesPairsWithinTwiceTheMergeDistance) {
+  // a seam pair 4 mm apart, beyond merge_distance (3 mm), with nothing pulling it: a step leaves it open; a stalled
+  // sewing's merge joins it into one point at its middle, but not at 6.5 mm, beyond twice merge_distance
+  for (const Real gap : {0.004f, 0.0065f}) {
+    ClothMesh c = test::two_particles(gap, 0);
+    c.seam_pairs.resize(2, 1);
+    c.seam_pairs << 0, 1;
+    Material m;
+    m.k_structural = m.k_shear = m.k_flexion = 1e-6f;
+    SolverParams p;
+    p.limit = "none";
+    p.gravity = Vec3::Zero();
+    p.seam_stiffness = 1e-6f;
+    p.dt = 0.001f;
+    Simulator sim(c, m, p);
+    ASSERT_TRUE(sim.step());
+    EXPECT_EQ(sim.sewn_fraction(), 0) << gap;
+    const bool near = gap < 2 * p.merge_distance;
+    EXPECT_EQ(sim.merge_stalled_seams(), near ? 1 : 0) << gap;
+    EXPECT_NEAR((sim.positions().col(0) - sim.positions().col(1)).norm(), near ? 0 : gap, 1e-6f) << gap;
+  }
+}
+
 TEST(Simulator, APointInsideTheBodyIsBroughtToItsSurface) {
   // Durupinar Eq. 3: a vertex 2 cm inside a sphere is moved out along the normal at push_speed (2 m/s: 1 cm per
   // 5 ms step), and is on the surface after the second step; without push_out it stays inside

@@ -215,6 +215,9 @@ class Simulator {
   Real seam_pair_gap_max() const;
   /// Share of seam pairs merged, 0..1.
   Real sewn_fraction() const;
+  /// For a sewing that has stopped closing (bench's sew phase): when every open seam pair is within twice
+  /// merge_distance, merges them all now, as every step merges those within merge_distance. Returns how many.
+  int merge_stalled_seams();
   /// The vertices joined by merged seam pairs, a group each: one point of the cloth.
   const std::vector<std::vector<int>>& sewn_points() const { return merged_groups_; }
   StrainStats strain() const;
@@ -242,7 +245,7 @@ class Simulator {
   // no vertex from `first` on in contact (contacts[i - first]) keeps a velocity into what it touches (relative to it)
   void hold_out(Eigen::Index first, const Contact* contacts);
   void integrate_positions();
-  void merge_seams();
+  int merge_seams(Real within);  // the pairs closer than `within` merged; how many
   void group_merged_pairs();
   bool check_divergence();
 
