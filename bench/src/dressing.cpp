@@ -73,9 +73,10 @@ void sew(const RunContext& run, RunResult& r) {
     const bool alive = sim.step();
     if (run.options.trace) r.sew_iteration_ms.push_back(float(iteration.ms()));
     if (!alive) break;
-    if (stall.stalled(sim.seam_pair_gap_max())) sim.merge_stalled_seams();
-    p.reached = sim.seam_pair_gap_max() <= gap || sim.sewn_fraction() >= 1;
-    run.progress.report("sew: iteration %ld, seam pairs within %.1f mm", i + 1, 1e3 * double(sim.seam_pair_gap_max()));
+    Real widest = sim.seam_pair_gap_max();
+    if (stall.stalled(widest) && sim.merge_stalled_seams() > 0) widest = sim.seam_pair_gap_max();
+    p.reached = widest <= gap || sim.sewn_fraction() >= 1;
+    run.progress.report("sew: iteration %ld, seam pairs within %.1f mm", i + 1, 1e3 * double(widest));
   }
   clock.finish(p);
 }

@@ -492,22 +492,24 @@ int Simulator::attach(const BodyFrame& body, Real reach) {
   // bind each attached vertex within reach to its closest body triangle (Durupinar 3.2); from now on it is moved by
   // the body only (1/m = 0), at its offset in that triangle's frame
   attach_vertex_.clear(), attach_tri_.clear();
-  std::vector<Vec3> bary, local;
+  attach_bary_.resize(3, static_cast<Eigen::Index>(mesh_.attached.size()));
+  attach_local_.resize(3, attach_bary_.cols());
   for (const int i : mesh_.attached) {
     const ClosestPoint cp = closest_point_brute(body, x_.col(i));
     const Vec3 offset = x_.col(i) - cp.point;
     if (!(offset.norm() <= reach)) continue;
-    attach_vertex_.push_back(i), attach_tri_.push_back(cp.triangle), bary.push_back(cp.bary);
-    local.push_back(cp.triangle >= 0 ? Vec3(triangle_frame(body, cp.triangle).transpose() * offset) : offset);
+    const auto k = static_cast<Eigen::Index>(attach_vertex_.size());
+    attach_vertex_.push_back(i);
+    attach_tri_.push_back(cp.triangle);
+    attach_bary_.col(k) = cp.bary;
+    attach_local_.col(k) = cp.triangle >= 0 ? Vec3(triangle_frame(body, cp.triangle).transpose() * offset) : offset;
     inv_m_[i] = 0;
     v_.col(i).setZero();
   }
-  attach_bary_.resize(3, static_cast<Eigen::Index>(bary.size()));
-  attach_local_.resize(3, attach_bary_.cols());
-  for (std::size_t k = 0; k < bary.size(); ++k)
-    attach_bary_.col(static_cast<Eigen::Index>(k)) = bary[k],
-    attach_local_.col(static_cast<Eigen::Index>(k)) = local[k];
-  return static_cast<int>(attach_vertex_.size());
+  const auto bound = static_cast<Eigen::Index>(attach_vertex_.size());
+  attach_bary_.conservativeResize(3, bound);
+  attach_local_.conservativeResize(3, bound);
+  return static_cast<int>(bound);
 }
 
 void Simulator::follow_attachments(const BodyFrame& body, Real time_before) {

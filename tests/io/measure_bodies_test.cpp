@@ -71,8 +71,8 @@ TEST(MeasureBodies, TheMakeHumanBodies) {
 }
 
 // a skirt drafted from Debian's human (Durupinar section 2): two panels sewn at the sides whose widths add up to the
-// hip girth plus the ease at the hip and the waist girth plus the waistband's 2 cm at the top, the waist attached; a body 10 % larger
-// gets panels 10 % of its girths wider; bad types and eases are refused naming what is allowed
+// hip girth plus the ease at the hip and the waist girth plus the waistband's 2 cm at the top, the waist attached; a
+// body 10 % larger gets panels 10 % of its girths wider; bad types and eases are refused naming what is allowed
 TEST(Draft, ASkirtHasTheBodysGirthsPlusItsEase) {
   if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
   const BodyFrame rest = load_body("debian:human").rest();
@@ -202,9 +202,9 @@ TEST(Draft, SleevesHaveTheUpperArmGirthPlusTheEaseAndCapsAsLongAsTheArmholes) {
 }
 
 // trousers drafted from Debian's human: four panels, each leg's front and back sewn at its sides, the two fronts and
-// the two backs at the centre, every waist attached; each panel half a leg wide below the crotch (the thigh girth plus the ease, halved)
-// and a quarter of the hip plus the ease across above it; every seam's two edges as long; the right panels mirror
-// the left ones
+// the two backs at the centre, every waist attached; each panel half a leg wide below the crotch (the thigh girth
+// plus the ease, halved) and a quarter of the hip plus the ease across above it; every seam's two edges as long; the
+// right panels mirror the left ones
 TEST(Draft, TrousersHaveTheThighAndHipGirthsPlusTheEase) {
   if (!std::filesystem::exists(kDebianHumanBody)) GTEST_SKIP() << "assimp-testmodels not installed";
   const BodyFrame rest = load_body("debian:human").rest();
